@@ -1,0 +1,229 @@
+#include "framework/assembly/linear_constraints.hpp"
+
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Import.hpp>
+#include <Tpetra_Vector.hpp>
+#include <TpetraExt_MatrixMatrix.hpp>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "framework/assembly/tpetra_compat.hpp"
+#include "framework/base/error.hpp"
+
+namespace railfe {
+
+LinearConstraints::LinearConstraints(const DofMap& dofs, std::string source)
+    : dofs_(&dofs), source_(std::move(source)) {}
+
+std::string LinearConstraints::dof_name(GlobalIndex dof) const {
+  const int dpn = dofs_->dofs_per_node();
+  static const char* kComponents = "xyz";
+  const int component = static_cast<int>(dof % dpn);
+  const std::string name = dpn == 3 ? std::string(1, kComponents[component])
+                                    : std::to_string(component + 1);
+  return "node " + std::to_string(dof / dpn + 1) + " component " + name;
+}
+
+void LinearConstraints::prescribe(GlobalIndex dof, double value) {
+  const LocalIndex local = dofs_->owned_map()->getLocalElement(dof);
+  if (local == Teuchos::OrdinalTraits<LocalIndex>::invalid()) return;
+  prescribed_.emplace_back(local, value);
+}
+
+void LinearConstraints::add_multipoint(const MultipointConstraint& constraint) {
+  if (dofs_->owned_map()->isNodeGlobalElement(constraint.slave)) multipoint_.push_back(constraint);
+}
+
+void LinearConstraints::finalize() {
+  const Communicator& comm = dofs_->partition().comm();
+  // The last value given for a DOF wins (conditions later in the deck override earlier ones).
+  std::map<LocalIndex, double> unique(prescribed_.begin(), prescribed_.end());
+  prescribed_.assign(unique.begin(), unique.end());
+
+  std::vector<long long> my_slaves;
+  for (const auto& constraint : multipoint_) my_slaves.push_back(constraint.slave);
+  std::vector<long long> all_slaves = comm.all_gather(my_slaves);
+  std::sort(all_slaves.begin(), all_slaves.end());
+  std::string problem;
+  const auto duplicate = std::adjacent_find(all_slaves.begin(), all_slaves.end());
+  if (duplicate != all_slaves.end()) {
+    problem = format_input_message(source_, "", dof_name(*duplicate) +
+                                                    " is the slave of two multi-point constraints",
+                                   "each DOF constrained once");
+  }
+  const std::set<long long> slaves(all_slaves.begin(), all_slaves.end());
+  for (const auto& constraint : multipoint_) {
+    for (const auto& [master, coefficient] : constraint.masters) {
+      if (problem.empty() && slaves.count(master)) {
+        problem = format_input_message(source_, "", dof_name(master) +
+                                                        " is both a master and a slave of "
+                                                        "multi-point constraints",
+                                       "masters that are not themselves constrained");
+      }
+    }
+  }
+  const auto& owned = *dofs_->owned_map();
+  for (const auto& [local, value] : prescribed_) {
+    if (problem.empty() && slaves.count(owned.getGlobalElement(local))) {
+      problem = format_input_message(
+          source_, "",
+          dof_name(owned.getGlobalElement(local)) +
+              " is both prescribed and the slave of a multi-point constraint",
+          "prescribe the master instead");
+    }
+  }
+  comm.agree(problem, true);
+  n_prescribed_ = comm.sum(static_cast<long long>(prescribed_.size()));
+  n_multipoint_ = static_cast<GlobalIndex>(all_slaves.size());
+}
+
+Teuchos::RCP<TpetraMatrix> LinearConstraints::apply(const Teuchos::RCP<TpetraMatrix>& K,
+                                                    TpetraVector& f) {
+  // Keep the original rows of prescribed DOFs and their loads: reactions are K u - f there.
+  reaction_columns_ = K->getColMap();
+  reaction_row_offsets_.assign(1, 0);
+  reaction_row_columns_.clear();
+  reaction_row_values_.clear();
+  reaction_loads_.clear();
+  {
+    auto local = K->getLocalMatrixHost();
+    const auto f_data = f.getData(0);
+    for (const auto& [row, value] : prescribed_) {
+      for (auto k = local.graph.row_map(row); k < local.graph.row_map(row + 1); ++k) {
+        reaction_row_columns_.push_back(local.graph.entries(k));
+        reaction_row_values_.push_back(local.values(k));
+      }
+      reaction_row_offsets_.push_back(reaction_row_columns_.size());
+      reaction_loads_.push_back(f_data[row]);
+    }
+  }
+  Teuchos::RCP<TpetraMatrix> system = K;
+  if (n_multipoint_ > 0) system = eliminate_multipoint(K, f);
+  if (n_prescribed_ > 0) eliminate_prescribed(*system, f);
+  return system;
+}
+
+Teuchos::RCP<TpetraMatrix> LinearConstraints::eliminate_multipoint(
+    const Teuchos::RCP<TpetraMatrix>& K, TpetraVector& f) {
+  const auto owned = dofs_->owned_map();
+  std::map<GlobalIndex, const MultipointConstraint*> by_slave;
+  for (const auto& constraint : multipoint_) by_slave[constraint.slave] = &constraint;
+
+  transformation_ = Teuchos::rcp(new TpetraMatrix(owned, 1));
+  shift_ = Teuchos::rcp(new TpetraVector(owned));
+  auto identity_on_slaves = Teuchos::rcp(new TpetraMatrix(owned, 1));
+  const double one = 1.0;
+  for (std::size_t local = 0; local < local_size(*owned); ++local) {
+    const GlobalIndex dof = owned->getGlobalElement(static_cast<LocalIndex>(local));
+    auto it = by_slave.find(dof);
+    if (it == by_slave.end()) {
+      transformation_->insertGlobalValues(dof, Teuchos::tuple(dof), Teuchos::tuple(one));
+      continue;
+    }
+    std::vector<GlobalIndex> columns;
+    std::vector<double> coefficients;
+    for (const auto& [master, coefficient] : it->second->masters) {
+      columns.push_back(master);
+      coefficients.push_back(coefficient);
+    }
+    if (!columns.empty()) {
+      transformation_->insertGlobalValues(dof, Teuchos::ArrayView<const GlobalIndex>(columns),
+                                          Teuchos::ArrayView<const double>(coefficients));
+    }
+    shift_->replaceGlobalValue(dof, it->second->offset);
+    identity_on_slaves->insertGlobalValues(dof, Teuchos::tuple(dof), Teuchos::tuple(one));
+  }
+  transformation_->fillComplete(owned, owned);
+  identity_on_slaves->fillComplete(owned, owned);
+
+  // f̄ = Tᵀ (f − K g)
+  TpetraVector work(owned);
+  K->apply(*shift_, work);
+  f.update(-1.0, work, 1.0);
+  work.putScalar(0.0);
+  transformation_->apply(f, work, Teuchos::TRANS);
+  f.assign(work);
+
+  // K̄ = Tᵀ K T + (identity on slave rows, which Tᵀ K T leaves empty)
+  TpetraMatrix KT(K->getRowMap(), 0);
+  Tpetra::MatrixMatrix::Multiply(*K, false, *transformation_, false, KT);
+  TpetraMatrix TtKT(transformation_->getDomainMap(), 0);
+  Tpetra::MatrixMatrix::Multiply(*transformation_, true, KT, false, TtKT);
+  return Tpetra::MatrixMatrix::add(1.0, false, TtKT, 1.0, false, *identity_on_slaves);
+}
+
+void LinearConstraints::eliminate_prescribed(TpetraMatrix& K, TpetraVector& f) {
+  const auto domain = K.getDomainMap();
+  TpetraVector values(domain), marker(domain);
+  for (const auto& [row, value] : prescribed_) {
+    values.replaceLocalValue(row, value);
+    marker.replaceLocalValue(row, 1.0);
+  }
+  // Move the known values to the right-hand side: f ← f − K g.
+  TpetraVector work(K.getRangeMap());
+  K.apply(values, work);
+  f.update(-1.0, work, 1.0);
+
+  TpetraVector column_marker(K.getColMap());
+  TpetraImport to_columns(domain, K.getColMap());
+  column_marker.doImport(marker, to_columns, Tpetra::INSERT);
+  const auto is_column_prescribed = column_marker.getData(0);
+  std::vector<char> is_row_prescribed(local_rows(K), 0);
+  for (const auto& entry : prescribed_) is_row_prescribed[entry.first] = 1;
+
+  K.resumeFill();
+  auto local = K.getLocalMatrixHost();
+  const auto& row_map = *K.getRowMap();
+  const auto& column_map = *K.getColMap();
+  std::vector<double> diagonal(local_rows(K), 1.0);
+  for (std::size_t row = 0; row < local_rows(K); ++row) {
+    const auto begin = local.graph.row_map(row), end = local.graph.row_map(row + 1);
+    if (is_row_prescribed[row]) {
+      const LocalIndex diagonal_column =
+          column_map.getLocalElement(row_map.getGlobalElement(static_cast<LocalIndex>(row)));
+      for (auto k = begin; k < end; ++k) {
+        if (local.graph.entries(k) == diagonal_column && local.values(k) != 0.0) {
+          diagonal[row] = local.values(k);
+        } else {
+          local.values(k) = 0.0;
+        }
+      }
+    } else {
+      for (auto k = begin; k < end; ++k) {
+        if (is_column_prescribed[local.graph.entries(k)] != 0.0) local.values(k) = 0.0;
+      }
+    }
+  }
+  K.fillComplete(K.getDomainMap(), K.getRangeMap());
+  // The diagonal keeps its size, so the equation u_i = value is as well scaled as its neighbours.
+  for (const auto& [row, value] : prescribed_) {
+    f.replaceLocalValue(row, diagonal[row] * value);
+  }
+}
+
+void LinearConstraints::recover(TpetraVector& solution) const {
+  if (transformation_.is_null()) return;
+  TpetraVector reduced(solution, Teuchos::Copy);
+  transformation_->apply(reduced, solution);
+  solution.update(1.0, *shift_, 1.0);
+}
+
+void LinearConstraints::reactions(const TpetraVector& u, TpetraVector& r) const {
+  r.putScalar(0.0);
+  if (reaction_columns_.is_null()) return;
+  TpetraVector u_columns(reaction_columns_);
+  TpetraImport to_columns(u.getMap(), reaction_columns_);
+  u_columns.doImport(u, to_columns, Tpetra::INSERT);
+  const auto u_data = u_columns.getData(0);
+  for (std::size_t k = 0; k < prescribed_.size(); ++k) {
+    double force = -reaction_loads_[k];
+    for (std::size_t j = reaction_row_offsets_[k]; j < reaction_row_offsets_[k + 1]; ++j) {
+      force += reaction_row_values_[j] * u_data[reaction_row_columns_[j]];
+    }
+    r.replaceLocalValue(prescribed_[k].first, force);
+  }
+}
+
+}  // namespace railfe

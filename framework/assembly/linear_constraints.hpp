@@ -1,0 +1,76 @@
+#pragma once
+/// \file
+/// Linear constraints on K u = f: prescribed values (Dirichlet) and multi-point constraints
+/// u_s = Σ c_m u_m + b. Multi-point constraints are eliminated by u = T ū + g (K̄ = Tᵀ K T);
+/// prescribed values by symmetric elimination, so a symmetric positive definite K stays so and
+/// CG, MueLu and Cholesky remain usable.
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "framework/assembly/dof_map.hpp"
+
+namespace railfe {
+
+/// u[slave] = Σ coefficient · u[master] + offset, over global DOF indices.
+struct MultipointConstraint {
+  GlobalIndex slave = 0;                                 ///< the DOF that is eliminated
+  std::vector<std::pair<GlobalIndex, double>> masters;   ///< (master DOF, coefficient)
+  double offset = 0;                                     ///< the constant b
+};
+
+/// The constraints of one linear solve and how to apply and undo them.
+class LinearConstraints {
+ public:
+  /// Constraints on the DOFs of \p dofs; \p source names the deck in messages.
+  LinearConstraints(const DofMap& dofs, std::string source);
+
+  /// Prescribes u[dof] = value. Any rank may call it; only the owner of \p dof keeps it, and a
+  /// DOF prescribed twice takes the last value.
+  void prescribe(GlobalIndex dof, double value);
+  /// Adds a multi-point constraint. Any rank may call it; the owner of the slave keeps it.
+  void add_multipoint(const MultipointConstraint& constraint);
+  /// Checks consistency (collective): a slave may not be prescribed, be a master, or be the slave
+  /// of two constraints. Throws InputError naming node and component.
+  void finalize();
+
+  /// Number of prescribed DOFs over all ranks (after finalize()).
+  GlobalIndex n_prescribed() const { return n_prescribed_; }
+  /// Number of multi-point constraints over all ranks (after finalize()).
+  GlobalIndex n_multipoint() const { return n_multipoint_; }
+
+  /// Applies the constraints to K u = f (collective) and returns the matrix to solve with; \p f
+  /// becomes the right-hand side. Without multi-point constraints the returned matrix is \p K
+  /// itself, modified in place; with them it is a new matrix. The rows of prescribed DOFs are
+  /// kept for reactions().
+  Teuchos::RCP<TpetraMatrix> apply(const Teuchos::RCP<TpetraMatrix>& K, TpetraVector& f);
+  /// Turns the solution of the constrained system into u, in place (collective).
+  void recover(TpetraVector& solution) const;
+  /// Reaction forces r = K u − f at prescribed DOFs (zero elsewhere), from the rows apply() kept.
+  void reactions(const TpetraVector& u, TpetraVector& r) const;
+
+ private:
+  std::string dof_name(GlobalIndex dof) const;
+  Teuchos::RCP<TpetraMatrix> eliminate_multipoint(const Teuchos::RCP<TpetraMatrix>& K,
+                                                  TpetraVector& f);
+  void eliminate_prescribed(TpetraMatrix& K, TpetraVector& f);
+
+  const DofMap* dofs_;
+  std::string source_;
+  std::vector<std::pair<LocalIndex, double>> prescribed_;  // (owned local DOF, value)
+  std::vector<MultipointConstraint> multipoint_;           // slaves owned here
+  GlobalIndex n_prescribed_ = 0;
+  GlobalIndex n_multipoint_ = 0;
+  Teuchos::RCP<TpetraMatrix> transformation_;  // T, when there are multi-point constraints
+  Teuchos::RCP<TpetraVector> shift_;           // g: offsets at slave DOFs
+
+  // Original rows of prescribed DOFs: u is imported to the column map of the original K.
+  Teuchos::RCP<const TpetraMap> reaction_columns_;
+  std::vector<std::size_t> reaction_row_offsets_{0};
+  std::vector<LocalIndex> reaction_row_columns_;
+  std::vector<double> reaction_row_values_;
+  std::vector<double> reaction_loads_;
+};
+
+}  // namespace railfe

@@ -1,0 +1,146 @@
+#include "framework/mesh/mesh_parameters.hpp"
+
+#include <Teuchos_Array.hpp>
+
+#include "framework/base/error.hpp"
+#include "framework/mesh/box_generator.hpp"
+#include "framework/mesh/derived_sets.hpp"
+#include "framework/mesh/mesh_checks.hpp"
+#include "framework/mesh/mesh_readers.hpp"
+
+namespace railfe {
+
+ParameterSpec mesh_parameters() {
+  ParameterSpec box("A structured hex8 box: node and side sets xmin, xmax, ymin, ymax, zmin, zmax "
+                    "cover its faces.");
+  box.real_array("Origin", {0, 0, 0}, "Corner with the smallest coordinates.", "m", 3);
+  box.required_real_array("Lengths", "Edge lengths along x, y and z.", "m", 3, Range::positive());
+  box.integer_array("Elements", {1, 1, 1}, "Elements along x, y and z.", 3, Range::at_least(1));
+  box.real_array("Grading", {1, 1, 1},
+                 "Per axis, size of the last element over the first (geometric progression; "
+                 "1 = uniform).",
+                 "", 3, Range::positive());
+  box.text("Block name", "block_1", "Name of the element block.");
+
+  ParameterSpec node_set("A node set selected from the mesh: give Box or Point.");
+  node_set.real_array("Box", {}, "Nodes inside {xmin, xmax, ymin, ymax, zmin, zmax}.", "m", 6);
+  node_set.real_array("Point", {}, "The single node nearest to {x, y, z}.", "m", 3);
+  node_set.text("Within", "", "Select only among this node set's nodes ('' = all nodes).");
+
+  ParameterSpec side_set("A side set selected from the mesh's element faces.");
+  side_set.required_real_array("Box", "Faces whose nodes all lie in {xmin, xmax, ymin, ymax, "
+                                      "zmin, zmax}.",
+                               "m", 6);
+  side_set.text("Within", "",
+                "Select only among this side set's faces ('' = all exterior faces).");
+
+  ParameterSpec spec("The mesh: generated, or read from Exodus II or Gmsh.");
+  spec.required_choice("Type",
+                       {{"box", "generate a structured box (sublist Box)"},
+                        {"exodus", "read an Exodus II file (File)"},
+                        {"gmsh", "read a Gmsh .msh 4.1 ASCII file (File)"}},
+                       "Where the mesh comes from.");
+  spec.text("File", "", "Mesh file for Type exodus or gmsh, relative to the deck's directory.");
+  spec.real("Length scale", 1.0,
+            "Factor applied to file coordinates to get metres (0.001 for a mesh in mm).", "",
+            Range::positive());
+  spec.sublist("Box", box, "Generated box (Type box).");
+  spec.named_sublists("Node sets", node_set, "Node sets defined from geometry.");
+  spec.named_sublists("Side sets", side_set, "Side sets defined from geometry.");
+  spec.choice("Partitioner", "multijagged",
+              {{"multijagged", "Zoltan2 multi-jagged geometric partitioning"},
+               {"rcb", "Zoltan2 recursive coordinate bisection"},
+               {"block", "contiguous element ranges (for debugging)"}},
+              "How elements are split over MPI ranks.");
+  return spec;
+}
+
+namespace {
+
+template <std::size_t N>
+std::array<double, N> array_of(const Teuchos::Array<double>& values) {
+  std::array<double, N> result{};
+  for (std::size_t i = 0; i < N; ++i) result[i] = values[i];
+  return result;
+}
+
+Mesh generate_from_deck(const Teuchos::ParameterList& section, const Deck& deck) {
+  if (!section.isSublist("Box")) {
+    throw_input_error(deck.source, "Mesh/Box", "missing required sublist for Type 'box'",
+                      "a Box sublist with Lengths and Elements");
+  }
+  const auto& box = section.sublist("Box");
+  BoxSpec spec;
+  spec.origin = array_of<3>(box.get<Teuchos::Array<double>>("Origin"));
+  spec.lengths = array_of<3>(box.get<Teuchos::Array<double>>("Lengths"));
+  const auto& elements = box.get<Teuchos::Array<int>>("Elements");
+  spec.elements = {elements[0], elements[1], elements[2]};
+  spec.grading = array_of<3>(box.get<Teuchos::Array<double>>("Grading"));
+  spec.block_name = box.get<std::string>("Block name");
+  const double n_elements = 1.0 * elements[0] * elements[1] * elements[2];
+  if (n_elements > 2e8) {
+    throw_input_error(deck.source, "Mesh/Box/Elements",
+                      "asks for " + std::to_string(static_cast<long long>(n_elements)) +
+                          " elements",
+                      "at most 2e8 elements");
+  }
+  return generate_box(spec);
+}
+
+}  // namespace
+
+Mesh build_mesh(const Teuchos::ParameterList& section, const Deck& deck) {
+  const auto type = section.get<std::string>("Type");
+  Mesh mesh;
+  if (type == "box") {
+    mesh = generate_from_deck(section, deck);
+  } else {
+    const auto file = section.get<std::string>("File");
+    if (file.empty()) {
+      throw_input_error(deck.source, "Mesh/File", "missing mesh file for Type '" + type + "'",
+                        "a path to the mesh file");
+    }
+    const std::string path = deck.resolve(file);
+    mesh = type == "exodus" ? read_exodus_mesh(path) : read_gmsh_mesh(path);
+    const double scale = section.get<double>("Length scale");
+    for (double& x : mesh.coordinates) x *= scale;
+  }
+
+  std::vector<DerivedSetSpec> derived;
+  const auto& node_sets = section.sublist("Node sets");
+  for (auto it = node_sets.begin(); it != node_sets.end(); ++it) {
+    const auto& entry = node_sets.sublist(node_sets.name(it));
+    DerivedSetSpec spec;
+    spec.name = node_sets.name(it);
+    spec.path = "Mesh/Node sets/" + spec.name;
+    spec.within = entry.get<std::string>("Within");
+    const auto& box = entry.get<Teuchos::Array<double>>("Box");
+    const auto& point = entry.get<Teuchos::Array<double>>("Point");
+    if (!box.empty()) spec.box = array_of<6>(box);
+    if (!point.empty()) spec.point = array_of<3>(point);
+    derived.push_back(spec);
+  }
+  const auto& side_sets = section.sublist("Side sets");
+  for (auto it = side_sets.begin(); it != side_sets.end(); ++it) {
+    const auto& entry = side_sets.sublist(side_sets.name(it));
+    DerivedSetSpec spec;
+    spec.name = side_sets.name(it);
+    spec.path = "Mesh/Side sets/" + spec.name;
+    spec.side_set = true;
+    spec.within = entry.get<std::string>("Within");
+    spec.box = array_of<6>(entry.get<Teuchos::Array<double>>("Box"));
+    derived.push_back(spec);
+  }
+  check_mesh(mesh);
+  add_derived_sets(mesh, derived, deck.source);
+  return mesh;
+}
+
+PartitionMethod partition_method(const Teuchos::ParameterList& section) {
+  const auto name = section.get<std::string>("Partitioner");
+  if (name == "rcb") return PartitionMethod::rcb;
+  if (name == "block") return PartitionMethod::block;
+  return PartitionMethod::multijagged;
+}
+
+}  // namespace railfe

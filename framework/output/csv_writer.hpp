@@ -1,0 +1,34 @@
+#pragma once
+/// \file
+/// CSV for histories and scalar results: one header row whose names carry their units
+/// (time_s, force_N), then rows of numbers at full precision. Opens in any spreadsheet.
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace railfe {
+
+/// A CSV file written by rank 0 (other ranks hold an inactive writer).
+class CsvWriter {
+ public:
+  /// Opens \p path and writes the header \p columns when \p active. Throws RunError if the file
+  /// cannot be opened.
+  CsvWriter(const std::string& path, const std::vector<std::string>& columns, bool active);
+  /// Writes a row of text cells (for label columns); the count must match the header.
+  void write_row(const std::vector<std::string>& cells);
+  /// Writes a row of numbers with 17 significant digits.
+  void write_row(const std::vector<double>& values);
+  /// Flushes to disk (call at intervals so a long run's history survives a crash).
+  void flush();
+
+  /// Formats \p value the way write_row() does.
+  static std::string format(double value);
+
+ private:
+  std::ofstream file_;
+  std::size_t n_columns_;
+  bool active_;
+};
+
+}  // namespace railfe

@@ -1,0 +1,77 @@
+#include "framework/output/output_directory.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include "framework/base/error.hpp"
+
+namespace railfe {
+
+namespace fs = std::filesystem;
+
+namespace {
+const char* kManifest = ".railfe-outputs";
+}
+
+OutputDirectory::OutputDirectory(std::string path, const Communicator& comm)
+    : path_(std::move(path)), comm_(comm) {
+  std::string problem;
+  if (comm_.is_root()) {
+    std::error_code error;
+    fs::create_directories(path_, error);
+    if (error || !fs::is_directory(path_)) {
+      problem = "cannot create output directory '" + path_ + "': " + error.message();
+    } else {
+      std::ifstream manifest(fs::path(path_) / kManifest);
+      std::string name;
+      while (std::getline(manifest, name)) {
+        if (!name.empty() && name.find('/') == std::string::npos) fs::remove(fs::path(path_) / name, error);
+      }
+      fs::remove(fs::path(path_) / kManifest, error);
+      fs::remove(fs::path(path_) / "FAILED.txt", error);
+      for (const auto& entry : fs::directory_iterator(path_, error)) {
+        if (entry.path().extension() == ".part") fs::remove(entry.path(), error);
+      }
+      std::ofstream probe(fs::path(path_) / ".railfe-write-test");
+      if (!probe) problem = "output directory '" + path_ + "' is not writable";
+      probe.close();
+      fs::remove(fs::path(path_) / ".railfe-write-test", error);
+    }
+  }
+  comm_.agree(problem, false);
+}
+
+std::string OutputDirectory::staging_path(const std::string& name) {
+  if (std::find(names_.begin(), names_.end(), name) == names_.end()) names_.push_back(name);
+  return (fs::path(path_) / (name + ".part")).string();
+}
+
+std::string OutputDirectory::final_path(const std::string& name) const {
+  return (fs::path(path_) / name).string();
+}
+
+void OutputDirectory::finalize() {
+  comm_.barrier();  // every rank has finished writing before files are renamed
+  std::string problem;
+  if (comm_.is_root()) {
+    std::ofstream manifest(fs::path(path_) / kManifest);
+    for (const auto& name : names_) {
+      std::error_code error;
+      const fs::path staged = fs::path(path_) / (name + ".part");
+      if (!fs::exists(staged)) continue;
+      fs::rename(staged, fs::path(path_) / name, error);
+      if (error) problem = "cannot rename '" + staged.string() + "': " + error.message();
+      manifest << name << "\n";
+    }
+  }
+  comm_.agree(problem, false);
+}
+
+void OutputDirectory::mark_failed(const std::string& message) const {
+  if (!comm_.is_root()) return;
+  std::ofstream failed(fs::path(path_) / "FAILED.txt");
+  failed << "This run failed; files ending in .part are incomplete.\n" << message << "\n";
+}
+
+}  // namespace railfe

@@ -1,0 +1,32 @@
+#include "framework/output/progress.hpp"
+
+#include <cstdio>
+
+namespace railfe {
+
+Progress::Progress(std::string label, double total, const Communicator& comm, bool quiet,
+                   double interval_seconds)
+    : label_(std::move(label)),
+      total_(total),
+      active_(comm.is_root() && !quiet),
+      interval_(interval_seconds) {}
+
+void Progress::update(double done) {
+  if (!active_) return;
+  const double elapsed = clock_.seconds();
+  if (elapsed - last_print_ < interval_) return;
+  last_print_ = elapsed;
+  const double fraction = total_ > 0 ? done / total_ : 1.0;
+  const double remaining = fraction > 0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
+  std::printf("[%s] %5.1f%% done, %.1f s elapsed, about %.0f s to go\n", label_.c_str(),
+              100.0 * fraction, elapsed, remaining);
+  std::fflush(stdout);
+}
+
+void Progress::finish() {
+  if (!active_) return;
+  std::printf("[%s] done in %.2f s\n", label_.c_str(), clock_.seconds());
+  std::fflush(stdout);
+}
+
+}  // namespace railfe

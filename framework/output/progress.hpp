@@ -1,0 +1,32 @@
+#pragma once
+/// \file
+/// Progress of long phases, printed once per job (by rank 0): percent done, elapsed time, ETA.
+
+#include <string>
+
+#include "framework/base/parallel.hpp"
+#include "framework/base/resources.hpp"
+
+namespace railfe {
+
+/// Reports progress of one phase at most every interval_seconds.
+class Progress {
+ public:
+  /// A phase called \p label with \p total units of work. Prints nothing if \p quiet.
+  Progress(std::string label, double total, const Communicator& comm, bool quiet,
+           double interval_seconds = 5.0);
+  /// Records that \p done units are complete; prints when the interval has passed.
+  void update(double done);
+  /// Prints the final line with the total time.
+  void finish();
+
+ private:
+  std::string label_;
+  double total_;
+  bool active_;
+  double interval_;
+  Stopwatch clock_;
+  double last_print_ = 0;
+};
+
+}  // namespace railfe

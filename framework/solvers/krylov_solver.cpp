@@ -1,0 +1,99 @@
+#include <BelosLinearProblem.hpp>
+#include <BelosSolverFactory_Tpetra.hpp>
+#include <BelosTpetraAdapter.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include <sstream>
+
+#include "framework/base/error.hpp"
+#include "framework/base/resources.hpp"
+#include "framework/solvers/krylov_solver.hpp"
+#include "framework/solvers/preconditioners.hpp"
+#include "framework/solvers/solution_check.hpp"
+
+namespace railfe {
+
+namespace {
+
+class KrylovSolver : public LinearSolver {
+ public:
+  explicit KrylovSolver(const KrylovSettings& settings) : settings_(settings) {}
+
+  void setup(const Teuchos::RCP<const TpetraMatrix>& A, const ProblemTraits& traits) override {
+    Stopwatch clock;
+    matrix_ = A;
+    if (settings_.method == "cg" && !traits.symmetric_positive_definite) {
+      throw RunError("CG needs a symmetric positive definite matrix; use 'gmres' for this problem");
+    }
+    preconditioner_ = make_preconditioner(settings_.preconditioner, A, traits);
+    setup_seconds_ = clock.seconds();
+  }
+
+  SolveReport solve(const TpetraVector& b, TpetraVector& x) override {
+    using MV = TpetraMultiVector;
+    using OP = TpetraOperator;
+    Stopwatch clock;
+    SolveReport report;
+    report.method = std::string(settings_.method == "cg" ? "CG" : "GMRES") + " + " +
+                    preconditioner_description(settings_.preconditioner);
+    report.setup_seconds = setup_seconds_;
+    if (b.norm2() == 0.0) {
+      x.putScalar(0.0);
+      report.solve_seconds = clock.seconds();
+      return report;
+    }
+    auto parameters = Teuchos::rcp(new Teuchos::ParameterList);
+    parameters->set("Convergence Tolerance", settings_.relative_tolerance);
+    parameters->set("Maximum Iterations", settings_.maximum_iterations);
+    if (settings_.method == "gmres") parameters->set("Num Blocks", settings_.restart);
+    parameters->set("Verbosity", Belos::Errors + Belos::Warnings);
+    Belos::SolverFactory<double, MV, OP> factory;
+    auto solver = factory.create(settings_.method == "cg" ? "CG" : "GMRES", parameters);
+    auto op = Teuchos::rcp_implicit_cast<const OP>(matrix_);
+    auto problem = Teuchos::rcp(new Belos::LinearProblem<double, MV, OP>(
+        op, Teuchos::rcpFromRef(x), Teuchos::rcpFromRef(b)));
+    if (!preconditioner_.is_null()) {
+      if (settings_.method == "cg") {
+        problem->setLeftPrec(preconditioner_);
+      } else {
+        problem->setRightPrec(preconditioner_);
+      }
+    }
+    problem->setProblem();
+    solver->setProblem(problem);
+    const Belos::ReturnType outcome = solver->solve();
+    report.iterations = solver->getNumIters();
+    const ResidualNorms norms = residual_norms(*matrix_, x, b);
+    report.relative_residual = norms.relative_residual;
+    report.backward_error = norms.backward_error;
+    report.solve_seconds = clock.seconds();
+    // Belos stops on its recursively updated residual; the true one may drift a little above it.
+    const bool accurate = norms.relative_residual <= 10 * settings_.relative_tolerance;
+    if (outcome != Belos::Converged || !accurate) {
+      std::ostringstream message;
+      message << report.method << " did not converge: after " << report.iterations
+              << " iterations the relative residual is " << norms.relative_residual
+              << " (target " << settings_.relative_tolerance << ", at most "
+              << settings_.maximum_iterations
+              << " iterations). Raise 'Maximum iterations', choose another preconditioner, or "
+                 "use a direct solver; also check that the model is restrained.";
+      throw RunError(message.str());
+    }
+    return report;
+  }
+
+ private:
+  KrylovSettings settings_;
+  Teuchos::RCP<const TpetraMatrix> matrix_;
+  Teuchos::RCP<TpetraOperator> preconditioner_;
+  double setup_seconds_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<LinearSolver> make_krylov_solver(const KrylovSettings& settings) {
+  return std::make_unique<KrylovSolver>(settings);
+}
+
+}  // namespace railfe

@@ -1,0 +1,56 @@
+#pragma once
+/// \file
+/// The linear solver layer. Every solver checks the answer it returns: iterative solvers the true
+/// residual, direct solvers the normwise backward error. A solve that misses its target throws
+/// RunError rather than returning a wrong answer.
+
+#include <memory>
+#include <string>
+
+#include "framework/assembly/tpetra_types.hpp"
+#include "framework/deck/parameter_spec.hpp"
+
+namespace railfe {
+
+/// What a solver may assume about, and use from, the problem.
+struct ProblemTraits {
+  /// The matrix is symmetric positive definite (CG, CHOLMOD and MueLu's defaults rely on it).
+  bool symmetric_positive_definite = true;
+  /// Unknowns per mesh node (MueLu aggregates node blocks).
+  int dofs_per_node = 1;
+  /// Coordinates of the owned nodes, one column per axis (optional; helps MueLu).
+  Teuchos::RCP<const TpetraMultiVector> node_coordinates;
+  /// Near null space over the owned DOFs, e.g. the six rigid-body modes of elasticity (optional;
+  /// MueLu smoothed aggregation needs it to be efficient on elasticity).
+  Teuchos::RCP<const TpetraMultiVector> near_null_space;
+};
+
+/// What one solve did, for the run summary.
+struct SolveReport {
+  std::string method;            ///< e.g. "CG + MueLu SA" or "CHOLMOD supernodal (rank 0)"
+  int iterations = 0;            ///< Krylov iterations (0 for direct solvers)
+  double relative_residual = 0;  ///< ||b − A x|| / ||b||, recomputed from the returned x
+  double backward_error = 0;     ///< ||b − A x||∞ / (||A||∞ ||x||∞ + ||b||∞)
+  double setup_seconds = 0;      ///< factorization or preconditioner set-up
+  double solve_seconds = 0;      ///< the solve itself, including the residual check
+};
+
+/// A configured solver for A x = b.
+class LinearSolver {
+ public:
+  virtual ~LinearSolver() = default;
+  /// Prepares for \p A: factorizes, or builds the preconditioner (collective). \p A must stay
+  /// alive and unchanged until the next setup().
+  virtual void setup(const Teuchos::RCP<const TpetraMatrix>& A, const ProblemTraits& traits) = 0;
+  /// Solves A x = b, x holding the initial guess for iterative methods (collective). Throws
+  /// RunError if the solution does not meet the configured accuracy.
+  virtual SolveReport solve(const TpetraVector& b, TpetraVector& x) = 0;
+};
+
+/// The valid parameters of a "Linear solver" sublist.
+ParameterSpec linear_solver_parameters();
+
+/// Creates the solver a validated "Linear solver" sublist describes.
+std::unique_ptr<LinearSolver> create_linear_solver(const Teuchos::ParameterList& parameters);
+
+}  // namespace railfe

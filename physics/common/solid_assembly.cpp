@@ -1,0 +1,277 @@
+#include "physics/common/solid_assembly.hpp"
+
+#include <Tpetra_MultiVector.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "framework/base/error.hpp"
+#include "framework/mesh/hex8_topology.hpp"
+#include "physics/common/expression.hpp"
+
+namespace railfe {
+
+void element_coordinates(const MeshPartition& partition, const LocalBlock& block,
+                         LocalIndex element, double x[8][3]) {
+  const LocalIndex* nodes = block.connectivity.data() + block.offsets[element];
+  for (int a = 0; a < 8; ++a) {
+    const double* c = partition.coordinates(nodes[a]);
+    x[a][0] = c[0];
+    x[a][1] = c[1];
+    x[a][2] = c[2];
+  }
+}
+
+void assemble_elastic_stiffness(FeMatrix& K, const MaterialTable& materials) {
+  const MeshPartition& partition = K.dofs().partition();
+  alignas(64) double element_matrix[24 * 24];
+  double x[8][3];
+  K.begin_assembly();
+  for (const auto& block : partition.blocks()) {
+    if (partition.mesh().blocks[block.block].type != ElementType::hex8) continue;
+    const LameConstants lame = materials.of_block(block.block).lame();
+    for (LocalIndex e = 0; e < block.n_elements(); ++e) {
+      element_coordinates(partition, block, e, x);
+      hex8_stiffness(x, lame, element_matrix);
+      K.add_element(block.connectivity.data() + block.offsets[e], 8, element_matrix);
+    }
+  }
+  K.end_assembly();
+}
+
+namespace {
+
+// Local hex8 element holding global element \p element, or false if another rank has it.
+bool find_local_element(const MeshPartition& partition, GlobalIndex element,
+                        const LocalBlock** block_out, LocalIndex* local_out) {
+  if (partition.element_ranks()[element] != partition.comm().rank()) return false;
+  const Mesh& mesh = partition.mesh();
+  const int block_index = mesh.block_of(element);
+  const GlobalIndex in_block = element - mesh.blocks[block_index].first_element;
+  for (const auto& block : partition.blocks()) {
+    if (block.block != block_index) continue;
+    const auto it = std::lower_bound(block.elements.begin(), block.elements.end(), in_block);
+    *block_out = &block;
+    *local_out = static_cast<LocalIndex>(it - block.elements.begin());
+    return true;
+  }
+  return false;
+}
+
+double side_set_area(const SideSet& set, const MeshPartition& partition) {
+  double area = 0;
+  for (const Side& side : set.sides) {
+    const LocalBlock* block;
+    LocalIndex e;
+    if (!find_local_element(partition, side.element, &block, &e)) continue;
+    double x[8][3];
+    element_coordinates(partition, *block, e, x);
+    area += hex8_face_area(x, side.face);
+  }
+  return partition.comm().sum(area);
+}
+
+}  // namespace
+
+void assemble_solid_loads(const SolidConditions& conditions, const MaterialTable& materials,
+                          const DofMap& dofs, TpetraVector& forces) {
+  const MeshPartition& partition = dofs.partition();
+  const Mesh& mesh = partition.mesh();
+  TpetraVector overlap(dofs.overlap_map());
+  {
+    auto f = overlap.getDataNonConst();
+    double x[8][3];
+    const bool has_gravity = conditions.gravity[0] != 0 || conditions.gravity[1] != 0 ||
+                             conditions.gravity[2] != 0;
+    for (const auto& block : partition.blocks()) {
+      if (!has_gravity || mesh.blocks[block.block].type != ElementType::hex8) continue;
+      const double density = materials.of_block(block.block).density;
+      const double body[3] = {density * conditions.gravity[0], density * conditions.gravity[1],
+                              density * conditions.gravity[2]};
+      double element_forces[24];
+      for (LocalIndex e = 0; e < block.n_elements(); ++e) {
+        element_coordinates(partition, block, e, x);
+        hex8_body_force(x, body, element_forces);
+        const LocalIndex* nodes = block.connectivity.data() + block.offsets[e];
+        for (int a = 0; a < 8; ++a) {
+          for (int d = 0; d < 3; ++d) f[3 * nodes[a] + d] += element_forces[3 * a + d];
+        }
+      }
+    }
+    for (const auto& load : conditions.surface_loads) {
+      const SideSet& set = mesh.side_set(load.side_set, "", "");
+      std::array<double, 3> traction{};
+      if (load.traction) traction = *load.traction;
+      if (load.total_force) {
+        const double area = side_set_area(set, partition);
+        for (int d = 0; d < 3; ++d) traction[d] = (*load.total_force)[d] / area;
+      }
+      for (const Side& side : set.sides) {
+        const LocalBlock* block;
+        LocalIndex e;
+        if (!find_local_element(partition, side.element, &block, &e)) continue;
+        element_coordinates(partition, *block, e, x);
+        double face_forces[12];
+        if (load.pressure) {
+          hex8_face_pressure(x, side.face, *load.pressure, face_forces);
+        } else {
+          hex8_face_traction(x, side.face, traction.data(), face_forces);
+        }
+        const LocalIndex* nodes = block->connectivity.data() + block->offsets[e];
+        for (int k = 0; k < 4; ++k) {
+          const LocalIndex node = nodes[kHex8FaceNodes[side.face][k]];
+          for (int d = 0; d < 3; ++d) f[3 * node + d] += face_forces[3 * k + d];
+        }
+      }
+    }
+  }
+  dofs.overlap_to_owned_sum(overlap, forces);
+
+  auto f = forces.getDataNonConst();
+  for (const auto& force : conditions.nodal_forces) {
+    const NodeSet& set = mesh.node_set(force.node_set, "", "");
+    long long active = 0;
+    for (GlobalIndex node : set.nodes) active += partition.node_ranks()[node] >= 0;
+    for (GlobalIndex node : set.nodes) {
+      const LocalIndex local = partition.local_node(node);
+      if (local < 0 || local >= partition.n_owned_nodes()) continue;
+      for (int d = 0; d < 3; ++d) f[3 * local + d] += force.total_force[d] / active;
+    }
+  }
+}
+
+std::vector<std::pair<GlobalIndex, GlobalIndex>> pair_tied_nodes(const Tie& tie, const Mesh& mesh,
+                                                                 const std::string& deck,
+                                                                 const std::string& path) {
+  std::vector<GlobalIndex> masters = mesh.node_set(tie.master_set, deck, path).nodes;
+  std::sort(masters.begin(), masters.end(), [&](GlobalIndex a, GlobalIndex b) {
+    return mesh.coordinates[3 * a] < mesh.coordinates[3 * b];
+  });
+  std::vector<std::pair<GlobalIndex, GlobalIndex>> pairs;
+  for (GlobalIndex slave : mesh.node_set(tie.slave_set, deck, path).nodes) {
+    const double* s = &mesh.coordinates[3 * slave];
+    auto first = std::lower_bound(masters.begin(), masters.end(), s[0] - tie.tolerance,
+                                  [&](GlobalIndex m, double value) {
+                                    return mesh.coordinates[3 * m] < value;
+                                  });
+    GlobalIndex match = -1;
+    for (auto it = first; it != masters.end() && mesh.coordinates[3 * *it] <= s[0] + tie.tolerance;
+         ++it) {
+      const double* m = &mesh.coordinates[3 * *it];
+      const double distance = std::sqrt((m[0] - s[0]) * (m[0] - s[0]) +
+                                        (m[1] - s[1]) * (m[1] - s[1]) +
+                                        (m[2] - s[2]) * (m[2] - s[2]));
+      if (distance <= tie.tolerance && *it != slave) {
+        match = *it;
+        break;
+      }
+    }
+    if (match < 0) {
+      throw_input_error(deck, path,
+                        "slave node " + std::to_string(slave + 1) + " of '" + tie.slave_set +
+                            "' has no node of '" + tie.master_set + "' within " +
+                            std::to_string(tie.tolerance) + " m",
+                        "node sets whose nodes coincide pairwise");
+    }
+    pairs.emplace_back(slave, match);
+  }
+  return pairs;
+}
+
+void add_solid_constraints(const SolidConditions& conditions,
+                           const std::vector<std::vector<std::pair<GlobalIndex, GlobalIndex>>>& ties,
+                           const DofMap& dofs, LinearConstraints& constraints) {
+  const MeshPartition& partition = dofs.partition();
+  const Mesh& mesh = partition.mesh();
+  for (const auto& condition : conditions.displacements) {
+    std::optional<Expression> expression;
+    if (!condition.expression.empty()) expression.emplace(condition.expression, "", "");
+    for (GlobalIndex node : mesh.node_set(condition.node_set, "", "").nodes) {
+      const LocalIndex local = partition.local_node(node);
+      if (local < 0 || local >= partition.n_owned_nodes()) continue;
+      const double* c = partition.coordinates(local);
+      const double value = expression ? (*expression)(c[0], c[1], c[2]) : condition.value;
+      for (int component : condition.components) constraints.prescribe(3 * node + component, value);
+    }
+  }
+  for (const auto& pairs : ties) {
+    for (const auto& [slave, master] : pairs) {
+      if (partition.node_ranks()[slave] < 0 || partition.node_ranks()[master] < 0) continue;
+      for (int d = 0; d < 3; ++d) {
+        constraints.add_multipoint({3 * slave + d, {{3 * master + d, 1.0}}, 0.0});
+      }
+    }
+  }
+  constraints.finalize();
+}
+
+std::vector<double> element_stresses(const MeshPartition& partition, const MaterialTable& materials,
+                                     const double* u_overlap) {
+  std::vector<double> stresses;
+  stresses.reserve(6 * partition.n_local_elements());
+  double x[8][3], u[24], stress[6];
+  for (const auto& block : partition.blocks()) {
+    const bool solid = partition.mesh().blocks[block.block].type == ElementType::hex8;
+    for (LocalIndex e = 0; e < block.n_elements(); ++e) {
+      if (!solid) {
+        stresses.insert(stresses.end(), 6, 0.0);
+        continue;
+      }
+      element_coordinates(partition, block, e, x);
+      const LocalIndex* nodes = block.connectivity.data() + block.offsets[e];
+      for (int a = 0; a < 8; ++a) {
+        for (int d = 0; d < 3; ++d) u[3 * a + d] = u_overlap[3 * nodes[a] + d];
+      }
+      hex8_centre_stress(x, u, materials.of_block(block.block).lame(), stress);
+      stresses.insert(stresses.end(), stress, stress + 6);
+    }
+  }
+  return stresses;
+}
+
+ProblemTraits elasticity_traits(const DofMap& dofs) {
+  const MeshPartition& partition = dofs.partition();
+  ProblemTraits traits;
+  traits.symmetric_positive_definite = true;
+  traits.dofs_per_node = 3;
+  const LocalIndex n_owned = partition.n_owned_nodes();
+  const auto comm = partition.comm().teuchos();
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  auto node_map = Teuchos::rcp(new TpetraMap(
+      invalid, Teuchos::ArrayView<const GlobalIndex>(partition.global_nodes().data(), n_owned), 0,
+      comm));
+  auto coordinates = Teuchos::rcp(new TpetraMultiVector(node_map, 3));
+  auto modes = Teuchos::rcp(new TpetraMultiVector(dofs.owned_map(), 6));
+  // Rigid-body modes about the centroid keep the six vectors well scaled.
+  double centre[3] = {0, 0, 0};
+  for (LocalIndex n = 0; n < n_owned; ++n) {
+    for (int d = 0; d < 3; ++d) centre[d] += partition.coordinates(n)[d];
+  }
+  const double count = partition.comm().sum(static_cast<double>(n_owned));
+  for (int d = 0; d < 3; ++d) centre[d] = partition.comm().sum(centre[d]) / count;
+  for (int d = 0; d < 3; ++d) {
+    auto column = coordinates->getDataNonConst(d);
+    for (LocalIndex n = 0; n < n_owned; ++n) column[n] = partition.coordinates(n)[d];
+  }
+  std::vector<Teuchos::ArrayRCP<double>> mode(6);
+  for (int k = 0; k < 6; ++k) mode[k] = modes->getDataNonConst(k);
+  for (LocalIndex n = 0; n < n_owned; ++n) {
+    const double* c = partition.coordinates(n);
+    const double x = c[0] - centre[0], y = c[1] - centre[1], z = c[2] - centre[2];
+    for (int d = 0; d < 3; ++d) mode[d][3 * n + d] = 1.0;  // translations
+    // rotations about x, y, z: ω × r
+    mode[3][3 * n + 1] = -z;
+    mode[3][3 * n + 2] = y;
+    mode[4][3 * n + 0] = z;
+    mode[4][3 * n + 2] = -x;
+    mode[5][3 * n + 0] = -y;
+    mode[5][3 * n + 1] = x;
+  }
+  traits.node_coordinates = coordinates;
+  traits.near_null_space = modes;
+  return traits;
+}
+
+}  // namespace railfe

@@ -1,0 +1,51 @@
+#pragma once
+/// \file
+/// Assembly of linear elastic solids: stiffness, loads, constraints, stresses. Shared by the
+/// modules that work with displacement unknowns (statics now; implicit dynamics and modal
+/// analysis next).
+
+#include <string>
+#include <vector>
+
+#include "framework/assembly/dof_map.hpp"
+#include "framework/assembly/fe_matrix.hpp"
+#include "framework/assembly/linear_constraints.hpp"
+#include "framework/solvers/linear_solver.hpp"
+#include "physics/common/solid_conditions.hpp"
+#include "physics/materials/elastic_material.hpp"
+
+namespace railfe {
+
+/// Copies the coordinates of local element \p element of \p block into \p x.
+void element_coordinates(const MeshPartition& partition, const LocalBlock& block,
+                         LocalIndex element, double x[8][3]);
+
+/// Assembles the stiffness of every local hex8 element into \p K (collective).
+void assemble_elastic_stiffness(FeMatrix& K, const MaterialTable& materials);
+
+/// Adds gravity, surface loads and nodal forces into \p forces over the owned DOFs of \p dofs,
+/// which is overwritten (collective).
+void assemble_solid_loads(const SolidConditions& conditions, const MaterialTable& materials,
+                          const DofMap& dofs, TpetraVector& forces);
+
+/// Node pairs (slave, master) of a tie, found by position. Throws InputError naming \p deck and
+/// \p path if a slave node has no master within the tolerance.
+std::vector<std::pair<GlobalIndex, GlobalIndex>> pair_tied_nodes(const Tie& tie, const Mesh& mesh,
+                                                                 const std::string& deck,
+                                                                 const std::string& path);
+
+/// Adds the Displacements and the tie pairs (per tie, from pair_tied_nodes) to \p constraints.
+void add_solid_constraints(const SolidConditions& conditions,
+                           const std::vector<std::vector<std::pair<GlobalIndex, GlobalIndex>>>& ties,
+                           const DofMap& dofs, LinearConstraints& constraints);
+
+/// Centre stresses (6 per element: xx, yy, zz, xy, yz, xz) of the local hex8 elements in
+/// partition order, from displacements \p u_overlap over the overlapping DOFs; other element
+/// types get zeros.
+std::vector<double> element_stresses(const MeshPartition& partition, const MaterialTable& materials,
+                                     const double* u_overlap);
+
+/// What MueLu needs to coarsen elasticity well: node coordinates and the six rigid-body modes.
+ProblemTraits elasticity_traits(const DofMap& dofs);
+
+}  // namespace railfe

@@ -1,0 +1,149 @@
+#include "physics/common/solid_conditions.hpp"
+
+#include <Teuchos_Array.hpp>
+
+#include "framework/base/error.hpp"
+#include "physics/common/expression.hpp"
+
+namespace railfe {
+
+void add_solid_condition_parameters(ParameterSpec& spec) {
+  ParameterSpec displacement("Prescribed displacements of a node set.");
+  displacement.required_text("Node set", "The nodes it applies to.");
+  displacement.text("Components", "xyz", "Which components are prescribed: letters of 'xyz'.");
+  displacement.real("Value", 0.0, "The prescribed value of each listed component.", "m");
+  displacement.text("Expression", "",
+                    "Instead of Value: a function of x, y, z in m (muParser syntax), evaluated at "
+                    "each node, e.g. '1e-3*(2*x+y+z)/2'.");
+  spec.named_sublists("Displacements", displacement, "Prescribed displacements (Dirichlet).");
+
+  ParameterSpec surface("A load on a side set: give exactly one of Traction, Pressure and Total "
+                        "force.");
+  surface.required_text("Side set", "The element faces it acts on.");
+  surface.real_array("Traction", {}, "Uniform traction vector.", "Pa", 3);
+  surface.real_array("Pressure", {}, "Pressure against the outward normal (one number).", "Pa", 1);
+  surface.real_array("Total force", {}, "Force vector spread uniformly over the set's area.", "N",
+                     3);
+  spec.named_sublists("Surface loads", surface, "Tractions and pressures on side sets.");
+
+  ParameterSpec nodal("A force shared equally by the nodes of a node set.");
+  nodal.required_text("Node set", "The nodes.");
+  nodal.required_real_array("Total force", "Force vector summed over the nodes.", "N", 3);
+  spec.named_sublists("Nodal forces", nodal, "Forces at nodes.");
+
+  spec.real_array("Gravity", {0, 0, 0},
+                  "Gravitational acceleration; every solid carries density × gravity.", "m/s^2", 3);
+
+  ParameterSpec tie("Ties two node sets: each slave node follows the master node at its place.");
+  tie.required_text("Master node set", "Nodes that remain unknowns.");
+  tie.required_text("Slave node set", "Nodes eliminated by multi-point constraints.");
+  tie.real("Tolerance", 1e-8, "Largest distance between paired nodes.", "m", Range::positive());
+  spec.named_sublists("Ties", tie, "Tied node sets (multi-point constraints).");
+
+  ParameterSpec probe("Reports the mean displacement of a node set.");
+  probe.required_text("Node set", "The nodes averaged.");
+  spec.named_sublists("Probes", probe, "Displacements written to <step>_probes.csv.");
+}
+
+namespace {
+
+std::array<double, 3> vector3(const Teuchos::Array<double>& values) {
+  return {values[0], values[1], values[2]};
+}
+
+std::vector<int> parse_components(const std::string& letters, const std::string& deck,
+                                  const std::string& path) {
+  std::vector<int> components;
+  for (char letter : letters) {
+    const int c = letter == 'x' ? 0 : letter == 'y' ? 1 : letter == 'z' ? 2 : -1;
+    if (c < 0) {
+      throw_input_error(deck, path, "'" + letters + "' contains '" + std::string(1, letter) + "'",
+                        "the letters x, y and z, e.g. 'xz'");
+    }
+    components.push_back(c);
+  }
+  if (components.empty()) throw_input_error(deck, path, "is empty", "the letters x, y and z");
+  return components;
+}
+
+template <typename Body>
+void for_each_sublist(const Teuchos::ParameterList& list, Body body) {
+  for (auto it = list.begin(); it != list.end(); ++it) {
+    body(list.name(it), list.sublist(list.name(it)));
+  }
+}
+
+}  // namespace
+
+SolidConditions read_solid_conditions(const Teuchos::ParameterList& step, const std::string& deck,
+                                      const std::string& path) {
+  SolidConditions conditions;
+  for_each_sublist(step.sublist("Displacements"), [&](const std::string& name, const auto& list) {
+    const std::string where = path + "/Displacements/" + name;
+    DisplacementCondition condition;
+    condition.name = name;
+    condition.node_set = list.template get<std::string>("Node set");
+    condition.components =
+        parse_components(list.template get<std::string>("Components"), deck, where + "/Components");
+    condition.value = list.template get<double>("Value");
+    condition.expression = list.template get<std::string>("Expression");
+    if (!condition.expression.empty()) Expression(condition.expression, deck, where + "/Expression");
+    conditions.displacements.push_back(condition);
+  });
+  for_each_sublist(step.sublist("Surface loads"), [&](const std::string& name, const auto& list) {
+    SurfaceLoad load;
+    load.name = name;
+    load.side_set = list.template get<std::string>("Side set");
+    const auto& traction = list.template get<Teuchos::Array<double>>("Traction");
+    const auto& pressure = list.template get<Teuchos::Array<double>>("Pressure");
+    const auto& total = list.template get<Teuchos::Array<double>>("Total force");
+    if (!traction.empty()) load.traction = vector3(traction);
+    if (!pressure.empty()) load.pressure = pressure[0];
+    if (!total.empty()) load.total_force = vector3(total);
+    const int given = load.traction.has_value() + load.pressure.has_value() +
+                      load.total_force.has_value();
+    if (given != 1) {
+      throw_input_error(deck, path + "/Surface loads/" + name,
+                        "gives " + std::to_string(given) + " of Traction, Pressure, Total force",
+                        "exactly one of them");
+    }
+    conditions.surface_loads.push_back(load);
+  });
+  for_each_sublist(step.sublist("Nodal forces"), [&](const std::string& name, const auto& list) {
+    conditions.nodal_forces.push_back(
+        {name, list.template get<std::string>("Node set"),
+         vector3(list.template get<Teuchos::Array<double>>("Total force"))});
+  });
+  conditions.gravity = vector3(step.get<Teuchos::Array<double>>("Gravity"));
+  for_each_sublist(step.sublist("Ties"), [&](const std::string& name, const auto& list) {
+    conditions.ties.push_back({name, list.template get<std::string>("Master node set"),
+                               list.template get<std::string>("Slave node set"),
+                               list.template get<double>("Tolerance")});
+  });
+  for_each_sublist(step.sublist("Probes"), [&](const std::string& name, const auto& list) {
+    conditions.probes.push_back({name, list.template get<std::string>("Node set")});
+  });
+  return conditions;
+}
+
+void check_solid_conditions(const SolidConditions& conditions, const Mesh& mesh,
+                            const std::string& deck, const std::string& path) {
+  for (const auto& condition : conditions.displacements) {
+    mesh.node_set(condition.node_set, deck, path + "/Displacements/" + condition.name + "/Node set");
+  }
+  for (const auto& load : conditions.surface_loads) {
+    mesh.side_set(load.side_set, deck, path + "/Surface loads/" + load.name + "/Side set");
+  }
+  for (const auto& force : conditions.nodal_forces) {
+    mesh.node_set(force.node_set, deck, path + "/Nodal forces/" + force.name + "/Node set");
+  }
+  for (const auto& tie : conditions.ties) {
+    mesh.node_set(tie.master_set, deck, path + "/Ties/" + tie.name + "/Master node set");
+    mesh.node_set(tie.slave_set, deck, path + "/Ties/" + tie.name + "/Slave node set");
+  }
+  for (const auto& probe : conditions.probes) {
+    mesh.node_set(probe.node_set, deck, path + "/Probes/" + probe.name + "/Node set");
+  }
+}
+
+}  // namespace railfe

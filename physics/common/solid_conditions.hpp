@@ -1,0 +1,82 @@
+#pragma once
+/// \file
+/// Boundary conditions, loads, ties and probes of solid mechanics as decks write them, shared by
+/// the modules that solve for displacements. Each kind has its spec (for a module's valid list),
+/// a reader and a check against the mesh.
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "framework/deck/parameter_spec.hpp"
+#include "framework/mesh/mesh.hpp"
+
+namespace railfe {
+
+/// Prescribed displacement components of a node set.
+struct DisplacementCondition {
+  std::string name;                ///< its name in the deck
+  std::string node_set;            ///< where it applies
+  std::vector<int> components;     ///< 0 = x, 1 = y, 2 = z
+  double value = 0;                ///< prescribed value (m), when no expression is given
+  std::string expression;          ///< function of x, y, z (m); overrides value when not empty
+};
+
+/// A distributed load on a side set: a traction vector, a pressure, or a total force spread
+/// uniformly over the set's area.
+struct SurfaceLoad {
+  std::string name;                           ///< its name in the deck
+  std::string side_set;                       ///< where it acts
+  std::optional<std::array<double, 3>> traction;     ///< Pa
+  std::optional<double> pressure;                     ///< Pa, against the outward normal
+  std::optional<std::array<double, 3>> total_force;  ///< N
+};
+
+/// A force shared equally by the nodes of a node set.
+struct NodalForce {
+  std::string name;                  ///< its name in the deck
+  std::string node_set;              ///< the nodes
+  std::array<double, 3> total_force{};  ///< N, summed over the nodes
+};
+
+/// Two node sets whose coincident nodes move together (multi-point constraints).
+struct Tie {
+  std::string name;        ///< its name in the deck
+  std::string master_set;  ///< nodes that stay unknowns
+  std::string slave_set;   ///< nodes that follow their coincident master
+  double tolerance = 0;    ///< largest distance between paired nodes (m)
+};
+
+/// A node set whose mean displacement is reported in the step's probes CSV.
+struct Probe {
+  std::string name;      ///< its name in the deck (and the CSV row)
+  std::string node_set;  ///< the nodes averaged
+};
+
+/// All the conditions of one step.
+struct SolidConditions {
+  std::vector<DisplacementCondition> displacements;  ///< Dirichlet conditions
+  std::vector<SurfaceLoad> surface_loads;            ///< tractions and pressures
+  std::vector<NodalForce> nodal_forces;              ///< point-like forces
+  std::array<double, 3> gravity{};                   ///< m/s², body force ρ g on every solid
+  std::vector<Tie> ties;                             ///< tied node sets
+  std::vector<Probe> probes;                         ///< reported displacements
+};
+
+/// Adds Displacements, Surface loads, Nodal forces, Gravity, Ties and Probes to \p spec.
+void add_solid_condition_parameters(ParameterSpec& spec);
+
+/// Reads the conditions from a validated step list. Throws InputError (naming \p deck and the
+/// step \p path) for combinations the spec cannot express: a surface load with none or several
+/// of traction, pressure and total force; bad component letters; invalid expressions.
+SolidConditions read_solid_conditions(const Teuchos::ParameterList& step, const std::string& deck,
+                                      const std::string& path);
+
+/// Checks that every node set and side set named exists in \p mesh (InputError otherwise).
+void check_solid_conditions(const SolidConditions& conditions, const Mesh& mesh,
+                            const std::string& deck, const std::string& path);
+
+}  // namespace railfe

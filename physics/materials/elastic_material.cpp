@@ -1,0 +1,56 @@
+#include "physics/materials/elastic_material.hpp"
+
+#include <Teuchos_Array.hpp>
+
+#include "framework/base/error.hpp"
+
+namespace railfe {
+
+ParameterSpec materials_parameters() {
+  ParameterSpec material("An isotropic linear elastic material.");
+  material.required_real("Young's modulus", "Young's modulus E.", "Pa", Range::positive());
+  material.required_real("Poisson's ratio", "Poisson's ratio nu.", "", Range::open(-1.0, 0.5));
+  material.required_real("Density", "Mass density rho.", "kg/m^3", Range::positive());
+  material.required_text_array("Blocks", "Element blocks made of this material.");
+  // The section is itself the list of user-named materials.
+  ParameterSpec section("Materials, one sublist each, under a name of your choice.");
+  section.list()->set(kAnyName, *material.list(), material.doc());
+  return section;
+}
+
+MaterialTable::MaterialTable(const Teuchos::ParameterList& materials, const Mesh& mesh,
+                             const std::string& deck)
+    : assignment_(mesh.blocks.size(), -1) {
+  for (auto it = materials.begin(); it != materials.end(); ++it) {
+    const std::string name = materials.name(it);
+    const auto& entry = materials.sublist(name);
+    ElasticMaterial material{name, entry.get<double>("Young's modulus"),
+                             entry.get<double>("Poisson's ratio"), entry.get<double>("Density")};
+    const int index = static_cast<int>(materials_.size());
+    materials_.push_back(material);
+    for (const auto& block_name : entry.get<Teuchos::Array<std::string>>("Blocks")) {
+      const std::string path = "Materials/" + name + "/Blocks";
+      const int block = mesh.block_index(block_name, deck, path);
+      if (assignment_[block] >= 0) {
+        throw_input_error(deck, path,
+                          "block '" + block_name + "' already has material '" +
+                              materials_[assignment_[block]].name + "'",
+                          "one material per block");
+      }
+      assignment_[block] = index;
+    }
+  }
+}
+
+void MaterialTable::require_solid_blocks(const Mesh& mesh, const std::string& deck,
+                                         const std::string& path) const {
+  for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
+    if (mesh.blocks[b].type == ElementType::hex8 && assignment_[b] < 0) {
+      throw_input_error(deck, path,
+                        "element block '" + mesh.blocks[b].name + "' has no material",
+                        "list it under Blocks of one of the Materials");
+    }
+  }
+}
+
+}  // namespace railfe

@@ -1,0 +1,50 @@
+#pragma once
+/// \file
+/// Isotropic linear elastic materials and their assignment to element blocks: the deck's shared
+/// Materials section, used by every module that has solids.
+
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "framework/deck/parameter_spec.hpp"
+#include "framework/mesh/mesh.hpp"
+#include "physics/elements/hex8.hpp"
+
+namespace railfe {
+
+/// An isotropic linear elastic material.
+struct ElasticMaterial {
+  std::string name;      ///< the name of its sublist in Materials
+  double young = 0;      ///< Young's modulus E (Pa)
+  double poisson = 0;    ///< Poisson's ratio ν
+  double density = 0;    ///< mass density ρ (kg/m³)
+  /// λ and μ.
+  LameConstants lame() const { return lame_constants(young, poisson); }
+};
+
+/// Valid parameters of the Materials section.
+ParameterSpec materials_parameters();
+
+/// Which material each element block uses.
+class MaterialTable {
+ public:
+  /// Reads the validated Materials section and maps its Blocks onto \p mesh. Throws InputError
+  /// (naming \p deck) for a block the mesh lacks or a block given two materials.
+  MaterialTable(const Teuchos::ParameterList& materials, const Mesh& mesh, const std::string& deck);
+
+  /// Whether block \p block (index into Mesh::blocks) has a material.
+  bool has_material(int block) const { return assignment_[block] >= 0; }
+  /// The material of block \p block.
+  const ElasticMaterial& of_block(int block) const { return materials_[assignment_[block]]; }
+  /// Throws InputError naming \p deck and \p path unless every hex8 block has a material.
+  void require_solid_blocks(const Mesh& mesh, const std::string& deck,
+                            const std::string& path) const;
+
+ private:
+  std::vector<ElasticMaterial> materials_;
+  std::vector<int> assignment_;  // per block: index into materials_, or -1
+};
+
+}  // namespace railfe

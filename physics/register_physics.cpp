@@ -1,0 +1,15 @@
+// The one place where physics modules and shared sections are named. Adding a module: a new
+// folder under physics/ and one line here.
+#include "framework/app/registry.hpp"
+#include "physics/materials/elastic_material.hpp"
+#include "physics/statics/statics_module.hpp"
+
+namespace railfe {
+
+void register_physics(ModuleRegistry& registry) {
+  registry.add_section({"Materials", "Isotropic linear elastic materials of the solid blocks.",
+                        false, materials_parameters});
+  registry.add_module(statics_module());
+}
+
+}  // namespace railfe

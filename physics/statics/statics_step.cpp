@@ -1,0 +1,209 @@
+#include "physics/statics/statics_step.hpp"
+
+#include <Tpetra_Vector.hpp>
+
+#include <cmath>
+#include <cstdio>
+
+#include "framework/assembly/fe_matrix.hpp"
+#include "framework/assembly/linear_constraints.hpp"
+#include "framework/base/error.hpp"
+#include "framework/base/resources.hpp"
+#include "framework/output/csv_writer.hpp"
+#include "framework/output/exodus_writer.hpp"
+#include "framework/output/field_gather.hpp"
+#include "physics/common/solid_assembly.hpp"
+
+namespace railfe {
+
+StaticsStep::StaticsStep(const Teuchos::ParameterList& parameters) : parameters_(&parameters) {}
+
+void StaticsStep::check(StepContext& context) {
+  const Mesh& mesh = context.model.mesh();
+  const std::string& deck = context.source();
+  conditions_ = read_solid_conditions(*parameters_, deck, context.path);
+  check_solid_conditions(conditions_, mesh, deck, context.path);
+  if (!context.model.has_section("Materials")) {
+    throw_input_error(deck, "Materials", "missing: the statics step '" + context.step_name +
+                                             "' needs a material for every solid block",
+                      "a Materials section");
+  }
+  materials_.emplace(context.model.section("Materials"), mesh, deck);
+  materials_->require_solid_blocks(mesh, deck, "Materials");
+  for (const auto& force : conditions_.nodal_forces) {
+    bool attached = false;
+    for (GlobalIndex node : mesh.node_set(force.node_set, deck, "").nodes) {
+      attached = attached || context.model.partition().node_ranks()[node] >= 0;
+    }
+    if (!attached) {
+      throw_input_error(deck, context.path + "/Nodal forces/" + force.name,
+                        "node set '" + force.node_set + "' has no node attached to an element",
+                        "nodes of the solid mesh");
+    }
+  }
+  tie_pairs_.clear();
+  for (const auto& tie : conditions_.ties) {
+    tie_pairs_.push_back(pair_tied_nodes(tie, mesh, deck, context.path + "/Ties/" + tie.name));
+  }
+}
+
+void StaticsStep::run(StepContext& context) {
+  Model& model = context.model;
+  const DofMap& dofs = model.dofs(3);
+  const Communicator& comm = model.comm();
+  const std::string section = "Step " + context.step_name + " (statics)";
+  RunSummary& summary = context.summary;
+
+  Stopwatch clock;
+  FeMatrix stiffness(dofs);
+  const double graph_seconds = clock.seconds();
+  clock.restart();
+  assemble_elastic_stiffness(stiffness, *materials_);
+  const double assembly_seconds = clock.seconds();
+
+  clock.restart();
+  auto forces = Teuchos::rcp(new TpetraVector(dofs.owned_map()));
+  assemble_solid_loads(conditions_, *materials_, dofs, *forces);
+  double applied[3];
+  {
+    const auto f = forces->getData();
+    for (int d = 0; d < 3; ++d) {
+      double sum = 0;
+      for (LocalIndex i = d; i < dofs.n_owned_dofs(); i += 3) sum += f[i];
+      applied[d] = comm.sum(sum);
+    }
+  }
+  TpetraVector original_forces(*forces, Teuchos::Copy);
+  LinearConstraints constraints(dofs, context.source());
+  add_solid_constraints(conditions_, tie_pairs_, dofs, constraints);
+  const auto system = constraints.apply(stiffness.matrix(), *forces);
+  const double load_seconds = clock.seconds();
+
+  const auto solver = create_linear_solver(parameters_->sublist("Linear solver"));
+  auto u = Teuchos::rcp(new TpetraVector(dofs.owned_map()));
+  solver->setup(system, elasticity_traits(dofs));
+  const SolveReport report = solver->solve(*forces, *u);
+  constraints.recover(*u);
+  TpetraVector reactions(dofs.owned_map());
+  constraints.reactions(*u, reactions);
+
+  // Equilibrium: applied loads and reactions must cancel; their work gives the strain energy.
+  double reaction_sum[3];
+  {
+    const auto r = reactions.getData();
+    for (int d = 0; d < 3; ++d) {
+      double sum = 0;
+      for (LocalIndex i = d; i < dofs.n_owned_dofs(); i += 3) sum += r[i];
+      reaction_sum[d] = comm.sum(sum);
+    }
+  }
+  double imbalance = 0, scale = 0;
+  for (int d = 0; d < 3; ++d) {
+    imbalance += std::pow(applied[d] + reaction_sum[d], 2);
+    scale = std::max({scale, std::abs(applied[d]), std::abs(reaction_sum[d])});
+  }
+  const double strain_energy = 0.5 * (original_forces.dot(*u) + reactions.dot(*u));
+
+  const GlobalIndex n_elements = model.mesh().n_elements();
+  summary.add(section, "degrees of freedom", static_cast<double>(dofs.n_global_dofs()));
+  summary.add(section, "matrix entries", static_cast<double>(stiffness.n_global_entries()));
+  summary.add(section, "prescribed DOFs", static_cast<double>(constraints.n_prescribed()));
+  summary.add(section, "multi-point constraints", static_cast<double>(constraints.n_multipoint()));
+  summary.add(section, "solver", report.method);
+  summary.add(section, "iterations", report.iterations);
+  summary.add(section, "relative residual", report.relative_residual);
+  summary.add(section, "backward error", report.backward_error);
+  summary.add(section, "strain energy", strain_energy, "J");
+  summary.add(section, "equilibrium error |applied + reactions| / max", 
+              scale > 0 ? std::sqrt(imbalance) / scale : 0.0);
+  summary.add(section, "time: sparsity graph", graph_seconds, "s");
+  summary.add(section, "time: stiffness assembly", assembly_seconds, "s");
+  summary.add(section, "assembly rate per rank",
+              n_elements / comm.n_ranks() / std::max(assembly_seconds, 1e-9), "elements/s");
+  summary.add(section, "time: loads and constraints", load_seconds, "s");
+  summary.add(section, "time: solver setup", report.setup_seconds, "s");
+  summary.add(section, "time: solve", report.solve_seconds, "s");
+
+  clock.restart();
+  write_results(context, dofs, *u, reactions);
+  summary.add(section, "time: output", clock.seconds(), "s");
+  model.set_field("displacement", u);
+}
+
+void StaticsStep::write_results(StepContext& context, const DofMap& dofs, const TpetraVector& u,
+                                const TpetraVector& reactions) const {
+  const MeshPartition& partition = dofs.partition();
+  const Mesh& mesh = partition.mesh();
+  const Communicator& comm = partition.comm();
+  const bool root = comm.is_root();
+  const std::string& name = context.step_name;
+
+  const auto u_data = u.getData();
+  const auto r_data = reactions.getData();
+  const LocalIndex n_owned = partition.n_owned_nodes();
+
+  CsvWriter probes(context.output.staging_path(name + "_probes.csv"),
+                   {"probe", "nodes", "ux_m", "uy_m", "uz_m"}, root);
+  for (const auto& probe : conditions_.probes) {
+    double sum[3] = {0, 0, 0};
+    long long count = 0;
+    for (GlobalIndex node : mesh.node_set(probe.node_set, "", "").nodes) {
+      const LocalIndex local = partition.local_node(node);
+      if (local < 0 || local >= n_owned) continue;
+      ++count;
+      for (int d = 0; d < 3; ++d) sum[d] += u_data[3 * local + d];
+    }
+    const double total = static_cast<double>(comm.sum(count));
+    std::vector<std::string> row{probe.name, std::to_string(static_cast<long long>(total))};
+    for (int d = 0; d < 3; ++d) row.push_back(CsvWriter::format(comm.sum(sum[d]) / total));
+    probes.write_row(row);
+  }
+
+  CsvWriter reaction_file(context.output.staging_path(name + "_reactions.csv"),
+                          {"condition", "node_set", "Fx_N", "Fy_N", "Fz_N"}, root);
+  for (const auto& condition : conditions_.displacements) {
+    double sum[3] = {0, 0, 0};
+    for (GlobalIndex node : mesh.node_set(condition.node_set, "", "").nodes) {
+      const LocalIndex local = partition.local_node(node);
+      if (local < 0 || local >= n_owned) continue;
+      for (int d = 0; d < 3; ++d) sum[d] += r_data[3 * local + d];
+    }
+    std::vector<std::string> row{condition.name, condition.node_set};
+    for (int d = 0; d < 3; ++d) row.push_back(CsvWriter::format(comm.sum(sum[d])));
+    reaction_file.write_row(row);
+  }
+
+  if (!context.model.deck().parameters->sublist("Output").get<bool>("Exodus")) return;
+  TpetraVector u_overlap(dofs.overlap_map());
+  dofs.owned_to_overlap(u, u_overlap);
+  const auto stresses = element_stresses(partition, *materials_, u_overlap.getData().getRawPtr());
+  std::vector<double> element_values;
+  element_values.reserve(7 * stresses.size() / 6);
+  for (std::size_t e = 0; e < stresses.size() / 6; ++e) {
+    const double* s = &stresses[6 * e];
+    element_values.insert(element_values.end(), s, s + 6);
+    const double von_mises =
+        std::sqrt(0.5 * (std::pow(s[0] - s[1], 2) + std::pow(s[1] - s[2], 2) +
+                         std::pow(s[2] - s[0], 2)) +
+                  3 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
+    element_values.push_back(von_mises);
+  }
+  std::vector<double> owned_u(u_data.begin(), u_data.begin() + 3 * n_owned);
+  std::vector<double> owned_r(r_data.begin(), r_data.begin() + 3 * n_owned);
+  auto nodal = gather_node_field(partition, owned_u, 3);
+  auto nodal_reactions = gather_node_field(partition, owned_r, 3);
+  nodal.insert(nodal.end(), nodal_reactions.begin(), nodal_reactions.end());
+  const auto element = gather_element_field(partition, element_values, 7);
+
+  ExodusWriter writer(context.output.staging_path(name + ".exo"), mesh,
+                      context.model.deck().parameters->get<std::string>("Title"),
+                      {"displacement_x", "displacement_y", "displacement_z", "reaction_x",
+                       "reaction_y", "reaction_z"},
+                      {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz",
+                       "stress_xz", "von_mises"},
+                      root);
+  writer.write_step(1.0, nodal, element);
+  writer.close();
+}
+
+}  // namespace railfe

@@ -1,0 +1,36 @@
+#pragma once
+/// \file
+/// One linear static solve (see statics_module.hpp).
+
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "framework/app/module.hpp"
+#include "physics/common/solid_conditions.hpp"
+#include "physics/materials/elastic_material.hpp"
+
+namespace railfe {
+
+class DofMap;
+class LinearConstraints;
+
+/// A linear elastostatic step.
+class StaticsStep : public AnalysisStep {
+ public:
+  /// A step configured by its validated parameter list.
+  explicit StaticsStep(const Teuchos::ParameterList& parameters);
+  void check(StepContext& context) override;
+  void run(StepContext& context) override;
+
+ private:
+  void write_results(StepContext& context, const DofMap& dofs, const TpetraVector& u,
+                     const TpetraVector& reactions) const;
+
+  const Teuchos::ParameterList* parameters_;
+  SolidConditions conditions_;
+  std::optional<MaterialTable> materials_;
+  std::vector<std::vector<std::pair<GlobalIndex, GlobalIndex>>> tie_pairs_;
+};
+
+}  // namespace railfe
