@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <unordered_map>
 
 #include "framework/assembly/tpetra_compat.hpp"
 
@@ -17,7 +18,7 @@ struct FeMatrix::Storage {
 };
 
 FeMatrix::FeMatrix(const DofMap& dofs) : dofs_(&dofs), storage_(std::make_unique<Storage>()) {
-  build_node_adjacency();
+  build_sparsity();
   const int dpn = dofs.dofs_per_node();
   const MeshPartition& partition = dofs.partition();
   const LocalIndex n_nodes = partition.n_local_nodes();
@@ -33,22 +34,33 @@ FeMatrix::FeMatrix(const DofMap& dofs) : dofs_(&dofs), storage_(std::make_unique
   counts.sync_device();
   Kokkos::DualView<const std::size_t*, Tpetra::FECrsGraph<>::device_type> const_counts = counts;
 
-  // Tpetra chooses the column map: rows of nodes on a partition boundary also receive couplings
-  // from the neighbouring rank's elements, which no locally built column map could list.
-  storage_->graph = Teuchos::rcp(new Tpetra::FECrsGraph<>(dofs.owned_map(), dofs.overlap_map(),
-                                                          const_counts, dofs.importer()));
+  // Columns: the local nodes (owned, then ghosts), then the column-only nodes that reach owned
+  // rows through other ranks' elements. Column index of component c of column node n: dpn·n + c.
+  std::vector<GlobalIndex> column_dofs;
+  column_dofs.reserve(static_cast<std::size_t>(dpn) * (n_nodes + column_only_nodes_.size()));
+  for (LocalIndex node = 0; node < n_nodes; ++node) {
+    for (int c = 0; c < dpn; ++c) column_dofs.push_back(dpn * partition.global_node(node) + c);
+  }
+  for (GlobalIndex node : column_only_nodes_) {
+    for (int c = 0; c < dpn; ++c) column_dofs.push_back(dpn * node + c);
+  }
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  auto column_map = Teuchos::rcp(new TpetraMap(
+      invalid, Teuchos::ArrayView<const GlobalIndex>(column_dofs.data(), column_dofs.size()), 0,
+      partition.comm().teuchos()));
+
+  storage_->graph = Teuchos::rcp(new Tpetra::FECrsGraph<>(
+      dofs.owned_map(), dofs.overlap_map(), column_map, const_counts, dofs.importer()));
   Tpetra::beginAssembly(*storage_->graph);
-  std::vector<GlobalIndex> columns;
+  std::vector<LocalIndex> columns;
   for (LocalIndex node = 0; node < n_nodes; ++node) {
     columns.clear();
     for (LocalIndex k = adjacency_offsets_[node]; k < adjacency_offsets_[node + 1]; ++k) {
-      const GlobalIndex neighbour = partition.global_node(adjacency_[k]);
-      for (int c = 0; c < dpn; ++c) columns.push_back(dpn * neighbour + c);
+      for (int c = 0; c < dpn; ++c) columns.push_back(dpn * adjacency_[k] + c);
     }
     for (int c = 0; c < dpn; ++c) {
-      storage_->graph->insertGlobalIndices(
-          dpn * partition.global_node(node) + c,
-          Teuchos::ArrayView<const GlobalIndex>(columns.data(), columns.size()));
+      storage_->graph->insertLocalIndices(
+          dpn * node + c, Teuchos::ArrayView<const LocalIndex>(columns.data(), columns.size()));
     }
   }
   Tpetra::endAssembly(*storage_->graph);
@@ -57,115 +69,213 @@ FeMatrix::FeMatrix(const DofMap& dofs) : dofs_(&dofs), storage_(std::make_unique
 
 FeMatrix::~FeMatrix() = default;
 
-void FeMatrix::build_node_adjacency() {
+void FeMatrix::build_sparsity() {
   const MeshPartition& partition = dofs_->partition();
+  const Mesh& mesh = partition.mesh();
+  const int rank = partition.comm().rank();
   const LocalIndex n_nodes = partition.n_local_nodes();
-  // Node -> elements (as (block, element) pairs flattened to offsets into connectivity).
-  std::vector<LocalIndex> element_count(n_nodes + 1, 0);
+  const LocalIndex n_owned = partition.n_owned_nodes();
+
+  // Element node lists in column-node numbering: this rank's elements, then other ranks'
+  // elements that touch an owned node (their couplings land in owned rows when shared rows are
+  // summed, so the owned rows must have room for them).
+  std::vector<LocalIndex> element_offsets{0};
+  std::vector<LocalIndex> element_nodes;
+  std::vector<char> remote;
+  element_nodes_.clear();
+  element_node_counts_.clear();
   for (const auto& block : partition.blocks()) {
-    for (LocalIndex node : block.connectivity) ++element_count[node + 1];
-  }
-  for (LocalIndex n = 0; n < n_nodes; ++n) element_count[n + 1] += element_count[n];
-  struct ElementRef {
-    const LocalBlock* block;
-    LocalIndex element;
-  };
-  std::vector<ElementRef> node_elements(element_count[n_nodes]);
-  std::vector<LocalIndex> fill(element_count.begin(), element_count.end() - 1);
-  for (const auto& block : partition.blocks()) {
+    element_nodes.insert(element_nodes.end(), block.connectivity.begin(), block.connectivity.end());
     for (LocalIndex e = 0; e < block.n_elements(); ++e) {
-      for (LocalIndex k = block.offsets[e]; k < block.offsets[e + 1]; ++k) {
-        node_elements[fill[block.connectivity[k]]++] = {&block, e};
+      const LocalIndex count = block.offsets[e + 1] - block.offsets[e];
+      element_offsets.push_back(element_offsets.back() + count);
+      remote.push_back(0);
+      element_nodes_.push_back(block.connectivity.data() + block.offsets[e]);
+      element_node_counts_.push_back(count);
+    }
+  }
+  column_only_nodes_.clear();
+  std::unordered_map<GlobalIndex, LocalIndex> column_only_index;
+  if (partition.comm().n_ranks() > 1) {
+    for (const auto& block : mesh.blocks) {
+      for (GlobalIndex e = 0; e < block.n_elements(); ++e) {
+        if (partition.element_ranks()[block.first_element + e] == rank) continue;
+        const GlobalIndex* nodes = block.element_nodes(e);
+        const int count = block.n_element_nodes(e);
+        bool touches_owned = false;
+        for (int a = 0; a < count && !touches_owned; ++a) {
+          touches_owned = partition.node_ranks()[nodes[a]] == rank;
+        }
+        if (!touches_owned) continue;
+        for (int a = 0; a < count; ++a) {
+          LocalIndex column = partition.local_node(nodes[a]);
+          if (column < 0) {
+            auto [it, added] = column_only_index.emplace(
+                nodes[a], n_nodes + static_cast<LocalIndex>(column_only_nodes_.size()));
+            if (added) column_only_nodes_.push_back(nodes[a]);
+            column = it->second;
+          }
+          element_nodes.push_back(column);
+        }
+        element_offsets.push_back(static_cast<LocalIndex>(element_nodes.size()));
+        remote.push_back(1);
+      }
+    }
+  }
+  const std::size_t n_elements = remote.size();
+
+  // Rows -> elements (CSR), then each row's sorted, unique neighbours. Other ranks' elements only
+  // add to owned rows.
+  auto has_row = [&](std::size_t e, LocalIndex node) {
+    return node < n_nodes && (!remote[e] || node < n_owned);
+  };
+  std::vector<LocalIndex> row_count(n_nodes + 1, 0);
+  for (std::size_t e = 0; e < n_elements; ++e) {
+    for (LocalIndex k = element_offsets[e]; k < element_offsets[e + 1]; ++k) {
+      if (has_row(e, element_nodes[k])) ++row_count[element_nodes[k] + 1];
+    }
+  }
+  for (LocalIndex n = 0; n < n_nodes; ++n) row_count[n + 1] += row_count[n];
+  std::vector<LocalIndex> row_elements(row_count[n_nodes]);
+  std::vector<LocalIndex> fill(row_count.begin(), row_count.end() - 1);
+  for (std::size_t e = 0; e < n_elements; ++e) {
+    for (LocalIndex k = element_offsets[e]; k < element_offsets[e + 1]; ++k) {
+      if (has_row(e, element_nodes[k])) {
+        row_elements[fill[element_nodes[k]]++] = static_cast<LocalIndex>(e);
       }
     }
   }
   adjacency_offsets_.assign(n_nodes + 1, 0);
   adjacency_.clear();
+  adjacency_.reserve(27 * static_cast<std::size_t>(n_nodes));
   std::vector<LocalIndex> neighbours;
   for (LocalIndex node = 0; node < n_nodes; ++node) {
     neighbours.clear();
-    for (LocalIndex k = element_count[node]; k < element_count[node + 1]; ++k) {
-      const auto& ref = node_elements[k];
-      const auto& conn = ref.block->connectivity;
-      neighbours.insert(neighbours.end(), conn.begin() + ref.block->offsets[ref.element],
-                        conn.begin() + ref.block->offsets[ref.element + 1]);
+    for (LocalIndex k = row_count[node]; k < row_count[node + 1]; ++k) {
+      const LocalIndex e = row_elements[k];
+      neighbours.insert(neighbours.end(), element_nodes.begin() + element_offsets[e],
+                        element_nodes.begin() + element_offsets[e + 1]);
     }
     std::sort(neighbours.begin(), neighbours.end());
     neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
     adjacency_.insert(adjacency_.end(), neighbours.begin(), neighbours.end());
     adjacency_offsets_[node + 1] = static_cast<LocalIndex>(adjacency_.size());
   }
+
+  // Slots of each local element's node pairs: fill a scratch map column node -> slot for one
+  // row node at a time, then read it for every element at that node.
+  const std::size_t n_local_elements = partition.n_local_elements();
+  element_slot_offsets_.assign(n_local_elements + 1, 0);
+  for (std::size_t e = 0; e < n_local_elements; ++e) {
+    const std::size_t m = element_offsets[e + 1] - element_offsets[e];
+    element_slot_offsets_[e + 1] = element_slot_offsets_[e] + m * m;
+  }
+  element_slots_.assign(element_slot_offsets_[n_local_elements], 0);
+  std::vector<int> slot_of(n_nodes + column_only_nodes_.size(), -1);
+  for (LocalIndex node = 0; node < n_nodes; ++node) {
+    const LocalIndex begin = adjacency_offsets_[node], end = adjacency_offsets_[node + 1];
+    if (end - begin > 65535) {
+      throw std::logic_error("railfe: FeMatrix: a node has more than 65535 neighbours");
+    }
+    for (LocalIndex k = begin; k < end; ++k) slot_of[adjacency_[k]] = k - begin;
+    for (LocalIndex k = row_count[node]; k < row_count[node + 1]; ++k) {
+      const LocalIndex e = row_elements[k];
+      if (remote[e]) continue;
+      const LocalIndex first = element_offsets[e];
+      const LocalIndex m = element_offsets[e + 1] - first;
+      for (LocalIndex a = 0; a < m; ++a) {
+        if (element_nodes[first + a] != node) continue;
+        std::uint16_t* slots = element_slots_.data() + element_slot_offsets_[e] + a * m;
+        for (LocalIndex b = 0; b < m; ++b) {
+          slots[b] = static_cast<std::uint16_t>(slot_of[element_nodes[first + b]]);
+        }
+      }
+    }
+    for (LocalIndex k = begin; k < end; ++k) slot_of[adjacency_[k]] = -1;
+  }
 }
 
 void FeMatrix::begin_assembly() {
   storage_->matrix->beginAssembly();
-  storage_->matrix->setAllToScalar(0.0);
+  // A new matrix is zero already; clearing 1 kB per DOF again would cost a fifth of assembly.
+  if (assembled_once_) storage_->matrix->setAllToScalar(0.0);
+  assembled_once_ = true;
   auto local = storage_->matrix->getLocalMatrixHost();
   values_ = local.values.data();
   row_offsets_ = local.graph.row_map.data();
-  columns_ = local.graph.entries.data();
-  if (node_columns_.empty()) map_node_columns();
+  if (!layout_checked_) {
+    check_layout();
+    layout_checked_ = true;
+  }
 }
 
-void FeMatrix::map_node_columns() {
-  // add_element() finds a node's columns by searching for the column of its first component and
-  // takes the others as the next ones; and it reuses one search for all rows of a node. Both
-  // hold for Tpetra's column maps (a node's DOFs share an owner and sort together); checked here
-  // once rather than trusted.
+void FeMatrix::check_layout() const {
+  // add_element() writes entry (node n, component i; neighbour slot k, component j) of the
+  // owned+shared rows at row_offsets[dpn·n + i] + dpn·k + j. That follows from how the graph was
+  // built (sorted neighbours, column index dpn·column node + component); checked once here.
   const int dpn = dofs_->dofs_per_node();
-  const MeshPartition& partition = dofs_->partition();
-  const auto& column_map = *storage_->matrix->getColMap();
-  const LocalIndex n_nodes = partition.n_local_nodes();
-  node_columns_.resize(n_nodes);
+  auto local = storage_->matrix->getLocalMatrixHost();
+  const auto& entries = local.graph.entries;
+  const LocalIndex n_nodes = dofs_->partition().n_local_nodes();
   for (LocalIndex node = 0; node < n_nodes; ++node) {
-    const GlobalIndex first = dpn * partition.global_node(node);
-    node_columns_[node] = column_map.getLocalElement(first);
-    for (int c = 0; c < dpn; ++c) {
-      if (column_map.getLocalElement(first + c) != node_columns_[node] + c) {
-        throw std::logic_error("railfe: FeMatrix: a node's DOFs are not adjacent columns");
+    const LocalIndex begin = adjacency_offsets_[node];
+    const LocalIndex degree = adjacency_offsets_[node + 1] - begin;
+    for (int i = 0; i < dpn; ++i) {
+      const std::size_t row = row_offsets_[dpn * node + i];
+      bool matches = row_offsets_[dpn * node + i + 1] - row == static_cast<std::size_t>(dpn * degree);
+      for (LocalIndex k = 0; k < degree && matches; ++k) {
+        for (int j = 0; j < dpn; ++j) {
+          matches = matches && entries(row + dpn * k + j) == dpn * adjacency_[begin + k] + j;
+        }
       }
-    }
-    const std::size_t begin = row_offsets_[dpn * node];
-    const std::size_t length = row_offsets_[dpn * node + 1] - begin;
-    for (int c = 1; c < dpn; ++c) {
-      const std::size_t other = row_offsets_[dpn * node + c];
-      if (row_offsets_[dpn * node + c + 1] - other != length ||
-          !std::equal(columns_ + begin, columns_ + begin + length, columns_ + other)) {
-        throw std::logic_error("railfe: FeMatrix: rows of one node differ in sparsity");
+      if (!matches) {
+        throw std::logic_error("railfe: FeMatrix: the matrix layout differs from the sparsity built");
       }
     }
   }
 }
 
-void FeMatrix::add_element(const LocalIndex* nodes, int n_nodes, const double* element_matrix) {
-  const int dpn = dofs_->dofs_per_node();
+namespace {
+
+// Adds an element matrix of n_nodes nodes with dpn DOFs each; the fixed-size instance (hex8 with
+// three displacements) lets the compiler unroll and vectorize the inner triples.
+template <int kDpn, int kNodes>
+void scatter(int dpn_runtime, int nodes_runtime, const LocalIndex* nodes,
+             const std::uint16_t* slots, const double* element_matrix, double* values,
+             const std::size_t* row_offsets) {
+  const int dpn = kDpn > 0 ? kDpn : dpn_runtime;
+  const int n_nodes = kNodes > 0 ? kNodes : nodes_runtime;
   const int n_columns = dpn * n_nodes;
-  constexpr int kMaxNodes = 64;
-  if (n_nodes > kMaxNodes) {
-    throw std::logic_error("railfe: FeMatrix::add_element supports at most 64 nodes per element");
-  }
-  std::size_t position[kMaxNodes];
   for (int a = 0; a < n_nodes; ++a) {
-    const LocalIndex first_row = dpn * nodes[a];
-    const LocalIndex* row_begin = columns_ + row_offsets_[first_row];
-    const LocalIndex* row_end = columns_ + row_offsets_[first_row + 1];
-    for (int b = 0; b < n_nodes; ++b) {
-      position[b] = std::lower_bound(row_begin, row_end, node_columns_[nodes[b]]) - row_begin;
-    }
+    const std::uint16_t* row_slots = slots + a * n_nodes;
     for (int i = 0; i < dpn; ++i) {
-      double* row = values_ + row_offsets_[first_row + i];
-      const double* element_row = element_matrix + static_cast<std::size_t>(dpn * a + i) * n_columns;
+      double* row = values + row_offsets[dpn * nodes[a] + i];
+      const double* element_row = element_matrix + (dpn * a + i) * n_columns;
       for (int b = 0; b < n_nodes; ++b) {
-        for (int j = 0; j < dpn; ++j) row[position[b] + j] += element_row[dpn * b + j];
+        double* target = row + dpn * row_slots[b];
+        for (int j = 0; j < dpn; ++j) target[j] += element_row[dpn * b + j];
       }
     }
+  }
+}
+
+}  // namespace
+
+void FeMatrix::add_element(LocalIndex element, const double* element_matrix) {
+  const int dpn = dofs_->dofs_per_node();
+  const int n_nodes = element_node_counts_[element];
+  const std::uint16_t* slots = element_slots_.data() + element_slot_offsets_[element];
+  const LocalIndex* nodes = element_nodes_[element];
+  if (dpn == 3 && n_nodes == 8) {
+    scatter<3, 8>(dpn, n_nodes, nodes, slots, element_matrix, values_, row_offsets_);
+  } else {
+    scatter<0, 0>(dpn, n_nodes, nodes, slots, element_matrix, values_, row_offsets_);
   }
 }
 
 void FeMatrix::end_assembly() {
   values_ = nullptr;
   row_offsets_ = nullptr;
-  columns_ = nullptr;
   storage_->matrix->endAssembly();
 }
 

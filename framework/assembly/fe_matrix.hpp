@@ -3,6 +3,7 @@
 /// Element-by-element assembly of a global matrix on Tpetra's FECrsMatrix: each rank adds its
 /// elements into owned and shared rows; end_assembly() sums shared rows into their owners.
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -12,9 +13,10 @@ namespace railfe {
 
 /// A matrix over a DofMap whose sparsity couples every pair of nodes sharing an element.
 ///
-/// Assembly adds a dense element matrix straight into the CRS values: the columns of a node
-/// pair are found once per pair (binary search in the row) rather than once per entry, which
-/// keeps assembly cheap next to computing the element matrix.
+/// Where each element entry lands in the compressed rows is worked out once, when the sparsity is
+/// built (16-bit offsets, n_nodes² per element); add_element() is then a plain scatter, so
+/// assembly costs little more than computing the element matrices, and reassembling (Newton
+/// iterations, time steps) costs no searching at all.
 class FeMatrix {
  public:
   /// Builds the sparsity from every local element of every block (collective).
@@ -24,11 +26,12 @@ class FeMatrix {
   FeMatrix(const FeMatrix&) = delete;
   FeMatrix& operator=(const FeMatrix&) = delete;
 
-  /// Opens the matrix for assembly and sets every entry to zero.
+  /// Opens the matrix for assembly with every entry zero.
   void begin_assembly();
-  /// Adds the dense, row-major element matrix of \p n_nodes local nodes \p nodes (size
-  /// (n_nodes·dofs_per_node)², DOFs node-major) to the owned+shared rows.
-  void add_element(const LocalIndex* nodes, int n_nodes, const double* element_matrix);
+  /// Adds the dense, row-major matrix of local element \p element (numbered as
+  /// MeshPartition::first_local_element() does) to the owned+shared rows. Its size is
+  /// (n·dofs_per_node)² for an element of n nodes, DOFs node-major.
+  void add_element(LocalIndex element, const double* element_matrix);
   /// Sums shared rows into their owners and completes the matrix (collective).
   void end_assembly();
 
@@ -40,21 +43,30 @@ class FeMatrix {
   GlobalIndex n_global_entries() const;
 
  private:
-  void build_node_adjacency();
-  void map_node_columns();
+  void build_sparsity();
+  void check_layout() const;
 
   const DofMap* dofs_;
-  std::vector<LocalIndex> adjacency_offsets_;  // CSR over local nodes: neighbours via elements
+  // CSR over local nodes: their neighbours through elements, in column-node numbering (local
+  // nodes first, then column-only nodes: columns of owned rows that are not local nodes).
+  std::vector<LocalIndex> adjacency_offsets_;
   std::vector<LocalIndex> adjacency_;
+  std::vector<GlobalIndex> column_only_nodes_;
+  // For local element e with nodes n_0..n_{m-1}: slot of n_b among n_a's neighbours, for every
+  // (a, b), at element_slots_[element_slot_offsets_[e] + a·m + b].
+  std::vector<std::size_t> element_slot_offsets_;
+  std::vector<std::uint16_t> element_slots_;
+  std::vector<const LocalIndex*> element_nodes_;  // into the partition's connectivity
+  std::vector<int> element_node_counts_;
   // Tpetra's FE graph and matrix; kept out of this header (their 13.2 forward declarations
   // clash with the definitions).
   struct Storage;
   std::unique_ptr<Storage> storage_;
-  std::vector<LocalIndex> node_columns_;  // column index of each local node's first DOF
   // CRS arrays of the owned+shared rows while assembling.
   double* values_ = nullptr;
   const std::size_t* row_offsets_ = nullptr;
-  const LocalIndex* columns_ = nullptr;
+  bool layout_checked_ = false;
+  bool assembled_once_ = false;
 };
 
 }  // namespace railfe

@@ -103,8 +103,10 @@ void MeshPartition::build_local_numbering() {
     if (touched[n] && node_ranks_[n] != rank) global_nodes_.push_back(n);
   }
   local_of_global_.assign(n_nodes, -1);
+  local_coordinates_.resize(3 * global_nodes_.size());
   for (std::size_t i = 0; i < global_nodes_.size(); ++i) {
     local_of_global_[global_nodes_[i]] = static_cast<LocalIndex>(i);
+    for (int d = 0; d < 3; ++d) local_coordinates_[3 * i + d] = mesh_->coordinates[3 * global_nodes_[i] + d];
   }
 
   blocks_.clear();
@@ -122,6 +124,10 @@ void MeshPartition::build_local_numbering() {
       local.offsets.push_back(static_cast<LocalIndex>(local.connectivity.size()));
     }
     if (!local.elements.empty()) blocks_.push_back(std::move(local));
+  }
+  first_local_elements_.assign(1, 0);
+  for (const auto& block : blocks_) {
+    first_local_elements_.push_back(first_local_elements_.back() + block.n_elements());
   }
 }
 

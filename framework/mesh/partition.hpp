@@ -51,8 +51,8 @@ class MeshPartition {
   const std::vector<GlobalIndex>& global_nodes() const { return global_nodes_; }
   /// Local index of global node \p node, or -1 if this rank does not hold it.
   LocalIndex local_node(GlobalIndex node) const { return local_of_global_[node]; }
-  /// Coordinates of local node \p node.
-  const double* coordinates(LocalIndex node) const { return &mesh_->coordinates[3 * global_nodes_[node]]; }
+  /// Coordinates of local node \p node (a local copy, for locality in element loops).
+  const double* coordinates(LocalIndex node) const { return &local_coordinates_[3 * node]; }
   /// This rank's elements, block by block (blocks with no local element are left out).
   const std::vector<LocalBlock>& blocks() const { return blocks_; }
   /// Rank computing each global element.
@@ -61,6 +61,11 @@ class MeshPartition {
   const std::vector<int>& node_ranks() const { return node_ranks_; }
   /// Number of local elements over all blocks.
   LocalIndex n_local_elements() const;
+  /// Local index of the first element of blocks()[\p local_block] when the local elements of all
+  /// blocks are numbered one after another.
+  LocalIndex first_local_element(std::size_t local_block) const {
+    return first_local_elements_[local_block];
+  }
   /// Global number of nodes that some element uses (the nodes that carry unknowns).
   GlobalIndex n_active_nodes() const { return n_active_nodes_; }
   /// Name of the method used.
@@ -77,9 +82,11 @@ class MeshPartition {
   std::vector<int> node_ranks_;
   std::vector<GlobalIndex> global_nodes_;
   std::vector<LocalIndex> local_of_global_;
+  std::vector<double> local_coordinates_;
   LocalIndex n_owned_nodes_ = 0;
   GlobalIndex n_active_nodes_ = 0;
   std::vector<LocalBlock> blocks_;
+  std::vector<LocalIndex> first_local_elements_;
 };
 
 }  // namespace railfe

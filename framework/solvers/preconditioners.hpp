@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// Preconditioners for the Krylov solvers: MueLu smoothed aggregation (algebraic multigrid) and
-/// Ifpack2 one-level methods.
+/// Preconditioners for the Krylov solvers: MueLu algebraic multigrid (plain or smoothed
+/// aggregation) and Ifpack2 one-level methods.
 
 #include <string>
 
@@ -9,7 +9,8 @@
 
 namespace railfe {
 
-/// Builds the preconditioner called \p kind ("muelu", "ilu", "jacobi"; "none" gives null) for
+/// Builds the preconditioner called \p kind ("muelu", "muelu-sa", "ilu", "jacobi"; "none" gives
+/// null) for
 /// \p A (collective). MueLu uses the node coordinates and near null space of \p traits.
 Teuchos::RCP<TpetraOperator> make_preconditioner(const std::string& kind,
                                                  const Teuchos::RCP<const TpetraMatrix>& A,

@@ -29,13 +29,15 @@ void assemble_elastic_stiffness(FeMatrix& K, const MaterialTable& materials) {
   alignas(64) double element_matrix[24 * 24];
   double x[8][3];
   K.begin_assembly();
-  for (const auto& block : partition.blocks()) {
+  for (std::size_t b = 0; b < partition.blocks().size(); ++b) {
+    const auto& block = partition.blocks()[b];
     if (partition.mesh().blocks[block.block].type != ElementType::hex8) continue;
     const LameConstants lame = materials.of_block(block.block).lame();
+    const LocalIndex first = partition.first_local_element(b);
     for (LocalIndex e = 0; e < block.n_elements(); ++e) {
       element_coordinates(partition, block, e, x);
       hex8_stiffness(x, lame, element_matrix);
-      K.add_element(block.connectivity.data() + block.offsets[e], 8, element_matrix);
+      K.add_element(first + e, element_matrix);
     }
   }
   K.end_assembly();

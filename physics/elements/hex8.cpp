@@ -11,39 +11,93 @@ LameConstants lame_constants(double young, double poisson) {
   return {young * poisson / ((1 + poisson) * (1 - 2 * poisson)), young / (2 * (1 + poisson))};
 }
 
+namespace {
+
+// Eight doubles: one value per hex8 node, or per Gauss point. GCC and Clang map it to one AVX-512
+// register, or two AVX2 registers, or four SSE registers.
+typedef double Lanes __attribute__((vector_size(64), aligned(64)));
+
+inline Lanes load_lanes(const double* values) {
+  Lanes lanes;
+  __builtin_memcpy(&lanes, values, sizeof lanes);
+  return lanes;
+}
+
+}  // namespace
+
 void hex8_stiffness(const double x[8][3], const LameConstants& material, double* stiffness) {
+  // K_ab,ij = λ H_ij(a,b) + μ H_ji(a,b) + δ_ij μ Σ_k H_kk(a,b), H_ij(a,b) = Σ_q w_q g_i^a g_j^b,
+  // with g the physical gradients at Gauss point q. The Jacobians of all eight points are
+  // computed at once (lanes = points); then each H row (lanes = b) is accumulated over the points
+  // in registers. All nine H blocks are formed so no pass reads a column.
   const Hex8GaussTable& table = hex8_gauss_table();
-  // H[p][a][b] = ∫ ∂N_a/∂x_i ∂N_b/∂x_j dV for the pairs (i, j) below; the other three pairs are
-  // transposes. K_ab,ij = λ H_ij(a,b) + μ H_ji(a,b) + δ_ij μ Σ_k H_kk(a,b).
-  static constexpr int kPairs[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
-  alignas(64) double H[6][8][8] = {};
-  alignas(64) double gradient[3][8];
-  for (int q = 0; q < 8; ++q) {
-    const double weight = hex8_gradients(x, table.dN[q], gradient);
-    for (int p = 0; p < 6; ++p) {
-      const double* gi = gradient[kPairs[p][0]];
-      const double* gj = gradient[kPairs[p][1]];
-      for (int a = 0; a < 8; ++a) {
-        const double wa = weight * gi[a];
-        for (int b = 0; b < 8; ++b) H[p][a][b] += wa * gj[b];
-      }
+  Lanes J[3][3];  // J[d][k], lanes = points: ∂x_d/∂ξ_k
+  for (int d = 0; d < 3; ++d) {
+    for (int k = 0; k < 3; ++k) J[d][k] = Lanes{};
+  }
+  for (int a = 0; a < 8; ++a) {
+    for (int k = 0; k < 3; ++k) {
+      const Lanes dN = load_lanes(table.dN_by_point[k][a]);
+      for (int d = 0; d < 3; ++d) J[d][k] += x[a][d] * dN;
     }
   }
-  // Index of H for (i, j), and whether it is stored transposed.
-  static constexpr int kPairOf[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
+  const Lanes c00 = J[1][1] * J[2][2] - J[1][2] * J[2][1];
+  const Lanes c01 = J[1][2] * J[2][0] - J[1][0] * J[2][2];
+  const Lanes c02 = J[1][0] * J[2][1] - J[1][1] * J[2][0];
+  const Lanes det = J[0][0] * c00 + J[0][1] * c01 + J[0][2] * c02;
+  const Lanes r = 1.0 / det;
+  alignas(64) double inverse[3][3][8];  // inverse[k][i][q] = ∂ξ_k/∂x_i at point q
+  alignas(64) double weight[8];
+  const Lanes inverse_lanes[3][3] = {
+      {c00 * r, (J[0][2] * J[2][1] - J[0][1] * J[2][2]) * r,
+       (J[0][1] * J[1][2] - J[0][2] * J[1][1]) * r},
+      {c01 * r, (J[0][0] * J[2][2] - J[0][2] * J[2][0]) * r,
+       (J[0][2] * J[1][0] - J[0][0] * J[1][2]) * r},
+      {c02 * r, (J[0][1] * J[2][0] - J[0][0] * J[2][1]) * r,
+       (J[0][0] * J[1][1] - J[0][1] * J[1][0]) * r}};
+  __builtin_memcpy(inverse, inverse_lanes, sizeof inverse);
+  __builtin_memcpy(weight, &det, sizeof weight);
+
+  alignas(64) double gradient[8][3][8];  // gradient[q][i][a] = ∂N_a/∂x_i at point q
+  for (int q = 0; q < 8; ++q) {
+    const Lanes dN0 = load_lanes(table.dN[q][0]);
+    const Lanes dN1 = load_lanes(table.dN[q][1]);
+    const Lanes dN2 = load_lanes(table.dN[q][2]);
+    for (int i = 0; i < 3; ++i) {
+      const Lanes g = dN0 * inverse[0][i][q] + dN1 * inverse[1][i][q] + dN2 * inverse[2][i][q];
+      __builtin_memcpy(gradient[q][i], &g, sizeof g);
+    }
+  }
+  Lanes H[3][3][8];  // H[i][j][a], lanes = b
+  for (int i = 0; i < 3; ++i) {
+    for (int a = 0; a < 8; ++a) {
+      Lanes h0{}, h1{}, h2{};
+      for (int q = 0; q < 8; ++q) {
+        const double wa = weight[q] * gradient[q][i][a];
+        h0 += wa * load_lanes(gradient[q][0]);
+        h1 += wa * load_lanes(gradient[q][1]);
+        h2 += wa * load_lanes(gradient[q][2]);
+      }
+      H[i][0][a] = h0;
+      H[i][1][a] = h1;
+      H[i][2][a] = h2;
+    }
+  }
   const double lambda = material.lambda, mu = material.mu;
   for (int a = 0; a < 8; ++a) {
-    for (int b = 0; b < 8; ++b) {
-      const double trace = H[0][a][b] + H[1][a][b] + H[2][a][b];
-      for (int i = 0; i < 3; ++i) {
-        double* row = stiffness + (3 * a + i) * 24 + 3 * b;
-        for (int j = 0; j < 3; ++j) {
-          const int p = kPairOf[i][j];
-          const bool stored = i <= j;  // H_ij(a,b) stored as is for i <= j
-          const double h_ij = stored ? H[p][a][b] : H[p][b][a];
-          const double h_ji = stored ? H[p][b][a] : H[p][a][b];
-          row[j] = lambda * h_ij + mu * h_ji + (i == j ? mu * trace : 0.0);
-        }
+    const Lanes trace = mu * (H[0][0][a] + H[1][1][a] + H[2][2][a]);
+    for (int i = 0; i < 3; ++i) {
+      alignas(64) double value[3][8];
+      for (int j = 0; j < 3; ++j) {
+        Lanes v = lambda * H[i][j][a] + mu * H[j][i][a];
+        if (i == j) v += trace;
+        __builtin_memcpy(value[j], &v, sizeof v);
+      }
+      double* row = stiffness + (3 * a + i) * 24;
+      for (int b = 0; b < 8; ++b) {
+        row[3 * b] = value[0][b];
+        row[3 * b + 1] = value[1][b];
+        row[3 * b + 2] = value[2][b];
       }
     }
   }

@@ -27,6 +27,11 @@ Hex8GaussTable build_table() {
   for (int a = 0; a < 8; ++a) {
     for (int k = 0; k < 3; ++k) table.centre[k][a] = kHex8NodeReference[a][k] / 8;
   }
+  for (int q = 0; q < 8; ++q) {
+    for (int k = 0; k < 3; ++k) {
+      for (int a = 0; a < 8; ++a) table.dN_by_point[k][a][q] = table.dN[q][k][a];
+    }
+  }
   return table;
 }
 
