@@ -1,9 +1,12 @@
 #include "framework/deck/deck.hpp"
 
+#include <cctype>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <vector>
 
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_StringInputSource.hpp>
@@ -24,6 +27,64 @@ std::string Deck::resolve(const std::string& file_name) const {
 
 namespace {
 
+bool parses_as_number(const std::string& text, bool integer) {
+  const char* begin = text.c_str();
+  while (std::isspace(static_cast<unsigned char>(*begin))) ++begin;
+  char* end = nullptr;
+  if (integer) {
+    std::strtoll(begin, &end, 10);
+  } else {
+    std::strtod(begin, &end);
+  }
+  if (end == begin) return false;
+  while (std::isspace(static_cast<unsigned char>(*end))) ++end;
+  return *end == '\0';
+}
+
+// Teuchos turns type="double" value="abc" into 0 without a word: every number and flag is
+// checked here first, so a typo in a value can never become a silent zero.
+std::string value_problem(const std::string& type, const std::string& value) {
+  const bool is_array = type.rfind("Array(", 0) == 0 && type.back() == ')';
+  const std::string element = is_array ? type.substr(6, type.size() - 7) : type;
+  const bool integer = element == "int" || element == "long long";
+  const bool real = element == "double" || element == "float";
+  const bool flag = element == "bool";
+  if (!integer && !real && !flag) return "";
+  std::vector<std::string> items;
+  if (is_array) {
+    const auto open = value.find('{'), close = value.rfind('}');
+    if (open == std::string::npos || close == std::string::npos || close < open) {
+      return "array value '" + value + "' is not written as {a, b, c}";
+    }
+    const std::string inner = value.substr(open + 1, close - open - 1);
+    std::size_t start = 0;
+    while (start <= inner.size()) {
+      const auto comma = inner.find(',', start);
+      items.push_back(inner.substr(start, comma == std::string::npos ? std::string::npos
+                                                                     : comma - start));
+      if (comma == std::string::npos) break;
+      start = comma + 1;
+    }
+    if (items.size() == 1 && items[0].find_first_not_of(" \t") == std::string::npos) items.clear();
+  } else {
+    items.push_back(value);
+  }
+  for (const auto& item : items) {
+    if (flag) {
+      std::string word;
+      for (char c : item) {
+        if (!std::isspace(static_cast<unsigned char>(c))) word += static_cast<char>(std::tolower(c));
+      }
+      if (word != "true" && word != "false" && word != "1" && word != "0") {
+        return "'" + item + "' is not a bool";
+      }
+    } else if (!parses_as_number(item, integer)) {
+      return "'" + item + "' is not " + (integer ? "an integer" : "a number");
+    }
+  }
+  return "";
+}
+
 // Teuchos keeps the last of two same-named entries without a word; a deck that names a
 // parameter twice is almost always a copy-paste slip, so it is refused.
 void check_duplicates(const Teuchos::XMLObject& node, const std::string& source,
@@ -40,6 +101,13 @@ void check_duplicates(const Teuchos::XMLObject& node, const std::string& source,
       throw_input_error(source, path, "<" + tag + "> without a name attribute");
     }
     const std::string name = child.getAttribute("name");
+    if (tag == "Parameter" && child.hasAttribute("type") && child.hasAttribute("value")) {
+      const std::string problem = value_problem(child.getAttribute("type"), child.getAttribute("value"));
+      if (!problem.empty()) {
+        throw_input_error(source, join_path(path, name), "malformed parameter: " + problem,
+                          "a value of type " + child.getAttribute("type"));
+      }
+    }
     if (!seen.insert(name).second) {
       throw_input_error(source, join_path(path, name), "is given twice in the same list",
                         "each name once per list");

@@ -5,30 +5,27 @@
 #include <sstream>
 
 #include "framework/base/error.hpp"
+#include "framework/mesh/hex8_shape.hpp"
 #include "framework/mesh/hex8_topology.hpp"
 
 namespace railfe {
 
-double hex8_scaled_corner_jacobian(const double x[8][3]) {
-  // Each corner's three edges, in the order that gives a positive determinant for a valid hex.
-  static constexpr int kCornerEdges[8][3] = {{1, 3, 4}, {2, 0, 5}, {3, 1, 6}, {0, 2, 7},
-                                             {7, 5, 0}, {4, 6, 1}, {5, 7, 2}, {6, 4, 3}};
+double hex8_jacobian_quality(const double x[8][3]) {
+  static constexpr int kEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                                        {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
   double longest = 0;
-  double smallest = 1e300;
-  for (int corner = 0; corner < 8; ++corner) {
-    double e[3][3];
-    for (int k = 0; k < 3; ++k) {
-      for (int d = 0; d < 3; ++d) e[k][d] = x[kCornerEdges[corner][k]][d] - x[corner][d];
-      longest = std::max(longest, e[k][0] * e[k][0] + e[k][1] * e[k][1] + e[k][2] * e[k][2]);
-    }
-    const double det = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
-                       e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
-                       e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
-    smallest = std::min(smallest, det);
+  for (const auto& edge : kEdges) {
+    double length = 0;
+    for (int d = 0; d < 3; ++d) length += std::pow(x[edge[1]][d] - x[edge[0]][d], 2);
+    longest = std::max(longest, length);
   }
-  longest = std::sqrt(longest);
   if (longest == 0) return 0;
-  return smallest / (longest * longest * longest);
+  const double half_edge = std::sqrt(longest) / 2;
+  const Hex8GaussTable& table = hex8_gauss_table();
+  double gradient[3][8];
+  double smallest = 1e300;
+  for (int q = 0; q < 8; ++q) smallest = std::min(smallest, hex8_gradients(x, table.dN[q], gradient));
+  return smallest / (half_edge * half_edge * half_edge);
 }
 
 namespace {
@@ -78,16 +75,16 @@ void check_hex8_shapes(const Mesh& mesh) {
       for (int a = 0; a < 8; ++a) {
         for (int d = 0; d < 3; ++d) x[a][d] = mesh.coordinates[3 * nodes[a] + d];
       }
-      const double quality = hex8_scaled_corner_jacobian(x);
-      if (quality > 1e-10) continue;
+      const double quality = hex8_jacobian_quality(x);
+      if (quality > 1e-8) continue;
       std::ostringstream problem;
       problem << "element " << block.first_element + e + 1 << " (hex8, nodes";
       for (int a = 0; a < 8; ++a) problem << " " << nodes[a] + 1;
-      problem << ") is " << (quality < -1e-10 ? "inverted" : "degenerate")
-              << ": scaled corner Jacobian " << quality;
+      problem << ") is " << (quality < -1e-8 ? "inverted" : "degenerate")
+              << ": Jacobian quality " << quality << " at an integration point";
       throw_input_error(mesh.source, "block '" + block.name + "'", problem.str(),
-                        "positive corner Jacobians (nodes 0-3 counter-clockwise seen from "
-                        "nodes 4-7, no collapsed edges or faces)");
+                        "positive Jacobians at the integration points (nodes 0-3 counter-"
+                        "clockwise seen from nodes 4-7, no collapsed edges or faces)");
     }
   }
 }

@@ -10,12 +10,14 @@
 namespace railfe {
 
 /// Throws InputError naming the mesh source and the first bad entity (1-based element and node
-/// ids, as ParaView shows them). A hex8 element is inverted when the Jacobian determinant at a
-/// corner is negative and degenerate when it is below 1e-10 of the element's size cubed.
+/// ids, as ParaView shows them). A hex8 element is inverted when the Jacobian determinant is
+/// negative at one of its 2×2×2 integration points and degenerate when it is nearly zero there
+/// (quality below 1e-8): both make its stiffness meaningless. Negative Jacobians at corners only
+/// are accepted, as in MacNeal and Harder's standard patch, whose element 2 has one.
 void check_mesh(const Mesh& mesh);
 
-/// Smallest corner Jacobian determinant of a hex8 element with nodes \p x (8 × xyz), divided by
-/// the cube of its longest corner edge: 1 for a cube, <= 0 when inverted or degenerate.
-double hex8_scaled_corner_jacobian(const double x[8][3]);
+/// Smallest Jacobian determinant of a hex8 element at its 2×2×2 integration points, divided by
+/// (longest edge / 2)³: 1 for a cube, <= 0 for an inverted element.
+double hex8_jacobian_quality(const double x[8][3]);
 
 }  // namespace railfe

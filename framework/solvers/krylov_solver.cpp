@@ -16,6 +16,24 @@ namespace railfe {
 
 namespace {
 
+// A backward error this small means x solves a matrix and right-hand side within a few hundred
+// units of round-off of the given ones.
+constexpr double kRoundOffBackwardError = 1e-14;
+
+// Trilinos exception texts start with a file:line header; the last non-empty line says what.
+std::string essential_line(const std::string& text) {
+  std::string best;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = text.find('\n', start);
+    std::string line = text.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    if (line.find_first_not_of(" \t") != std::string::npos) best = line;
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return best;
+}
+
 class KrylovSolver : public LinearSolver {
  public:
   explicit KrylovSolver(const KrylovSettings& settings) : settings_(settings) {}
@@ -26,7 +44,12 @@ class KrylovSolver : public LinearSolver {
     if (settings_.method == "cg" && !traits.symmetric_positive_definite) {
       throw RunError("CG needs a symmetric positive definite matrix; use 'gmres' for this problem");
     }
-    preconditioner_ = make_preconditioner(settings_.preconditioner, A, traits);
+    try {
+      preconditioner_ = make_preconditioner(settings_.preconditioner, A, traits);
+    } catch (const std::exception& error) {
+      throw RunError("setting up the " + preconditioner_description(settings_.preconditioner) +
+                     " preconditioner failed: " + essential_line(error.what()));
+    }
     setup_seconds_ = clock.seconds();
   }
 
@@ -62,14 +85,28 @@ class KrylovSolver : public LinearSolver {
     }
     problem->setProblem();
     solver->setProblem(problem);
-    const Belos::ReturnType outcome = solver->solve();
+    Belos::ReturnType outcome = Belos::Unconverged;
+    try {
+      outcome = solver->solve();
+    } catch (const std::exception& error) {
+      // Belos throws when CG meets p·Ap <= 0: the matrix or the preconditioner is not positive
+      // definite.
+      throw RunError(report.method + " broke down after " + std::to_string(solver->getNumIters()) +
+                     " iterations: " + essential_line(error.what()) +
+                     ". The matrix or the preconditioner is not positive definite: check that the "
+                     "model is restrained, or try Preconditioner 'muelu-sa' or 'ilu', or a direct "
+                     "Method ('cholmod').");
+    }
     report.iterations = solver->getNumIters();
     const ResidualNorms norms = residual_norms(*matrix_, x, b);
     report.relative_residual = norms.relative_residual;
     report.backward_error = norms.backward_error;
     report.solve_seconds = clock.seconds();
-    // Belos stops on its recursively updated residual; the true one may drift a little above it.
-    const bool accurate = norms.relative_residual <= 10 * settings_.relative_tolerance;
+    // Belos stops on its recursively updated residual; the true one may drift a little above it,
+    // and no method gets below the round-off floor (backward error ~1e-16): a solution whose
+    // backward error is at that floor is as accurate as double precision allows.
+    const bool accurate = norms.relative_residual <= 10 * settings_.relative_tolerance ||
+                          norms.backward_error <= kRoundOffBackwardError;
     if (outcome != Belos::Converged || !accurate) {
       std::ostringstream message;
       message << report.method << " did not converge: after " << report.iterations

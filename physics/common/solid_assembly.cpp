@@ -6,10 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <sstream>
 
 #include "framework/base/error.hpp"
 #include "framework/mesh/hex8_topology.hpp"
-#include "physics/common/expression.hpp"
+#include "framework/deck/expression.hpp"
 
 namespace railfe {
 
@@ -171,11 +172,13 @@ std::vector<std::pair<GlobalIndex, GlobalIndex>> pair_tied_nodes(const Tie& tie,
       }
     }
     if (match < 0) {
-      throw_input_error(deck, path,
-                        "slave node " + std::to_string(slave + 1) + " of '" + tie.slave_set +
-                            "' has no node of '" + tie.master_set + "' within " +
-                            std::to_string(tie.tolerance) + " m",
-                        "node sets whose nodes coincide pairwise");
+      std::ostringstream problem;
+      problem << "slave node " << slave + 1 << " of '" << tie.slave_set << "' at (" << s[0] << ", "
+              << s[1] << ", " << s[2] << ") has no other node of '" << tie.master_set
+              << "' within " << tie.tolerance << " m";
+      throw_input_error(deck, path, problem.str(),
+                        "node sets whose nodes coincide pairwise (raise Tolerance if they are "
+                        "close but not equal)");
     }
     pairs.emplace_back(slave, match);
   }

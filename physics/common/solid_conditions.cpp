@@ -3,7 +3,7 @@
 #include <Teuchos_Array.hpp>
 
 #include "framework/base/error.hpp"
-#include "physics/common/expression.hpp"
+#include "framework/deck/expression.hpp"
 
 namespace railfe {
 

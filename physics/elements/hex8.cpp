@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "framework/mesh/hex8_topology.hpp"
-#include "physics/elements/hex8_shape.hpp"
+#include "framework/mesh/hex8_shape.hpp"
 
 namespace railfe {
 

@@ -1,4 +1,4 @@
-#include "physics/elements/hex8_shape.hpp"
+#include "framework/mesh/hex8_shape.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "physics/common/expression.hpp"
+#include "framework/deck/expression.hpp"
 
 #include <muParser.h>
 

@@ -1,0 +1,164 @@
+// Output: CSV precision, the run summary, Exodus files read back through the Exodus library,
+// fields gathered from all ranks, and the rule that failed runs leave nothing that looks complete.
+#include <gtest/gtest.h>
+
+#include <exodusII.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "framework/mesh/box_generator.hpp"
+#include "framework/mesh/mesh_readers.hpp"
+#include "framework/output/csv_writer.hpp"
+#include "framework/output/exodus_writer.hpp"
+#include "framework/output/field_gather.hpp"
+#include "framework/output/output_directory.hpp"
+#include "framework/output/run_summary.hpp"
+
+namespace railfe {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read(const fs::path& path) {
+  std::ifstream file(path);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+// One directory shared by all ranks of a test (rank 0 creates it).
+fs::path shared_scratch(const std::string& name, const Communicator& comm) {
+  const auto path = fs::temp_directory_path() / ("railfe_output_" + name);
+  if (comm.is_root()) fs::remove_all(path);
+  comm.barrier();
+  return path;
+}
+
+TEST(Csv, RoundTripsDoublesExactly) {
+  const double value = 0.1 + 0.2;
+  EXPECT_EQ(std::stod(CsvWriter::format(value)), value);
+  const Communicator comm;
+  const auto dir = shared_scratch("csv", comm);
+  if (comm.is_root()) fs::create_directories(dir);
+  comm.barrier();
+  {
+    CsvWriter csv((dir / "h.csv").string(), {"time_s", "force_N"}, comm.is_root());
+    csv.write_row(std::vector<double>{1e-7, -2.5});
+  }
+  comm.barrier();
+  EXPECT_EQ(read(dir / "h.csv"), "time_s,force_N\n9.9999999999999995e-08,-2.5\n");
+}
+
+TEST(RunSummary, TextAndJson) {
+  RunSummary summary;
+  summary.add("Run", "deck", "a \"quoted\" name");
+  summary.add("Solve", "iterations", 12);
+  summary.add("Solve", "time", 0.5, "s");
+  const std::string text = summary.text();
+  EXPECT_NE(text.find("iterations  12"), std::string::npos) << text;
+  EXPECT_NE(text.find("0.5 s"), std::string::npos) << text;
+  const std::string json = summary.json();
+  EXPECT_NE(json.find("\"deck\": \"a \\\"quoted\\\" name\""), std::string::npos) << json;
+  EXPECT_NE(json.find("\"time [s]\": 0.5"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"iterations\": 12"), std::string::npos) << json;
+}
+
+TEST(OutputDirectory, FilesAppearOnlyWhenTheRunSucceeds) {
+  const Communicator comm;
+  const auto dir = shared_scratch("staging", comm);
+  {
+    OutputDirectory output(dir.string(), comm);
+    const std::string staged = output.staging_path("result.csv");
+    EXPECT_EQ(fs::path(staged).filename(), "result.csv.part");
+    if (comm.is_root()) std::ofstream(staged) << "x\n";
+    comm.barrier();
+    EXPECT_FALSE(fs::exists(dir / "result.csv"));
+    output.finalize();
+    EXPECT_TRUE(fs::exists(dir / "result.csv"));
+    EXPECT_FALSE(fs::exists(staged));
+  }
+  comm.barrier();
+  {
+    // A second run that fails: the first run's file is gone, nothing complete is left.
+    OutputDirectory output(dir.string(), comm);
+    EXPECT_FALSE(fs::exists(dir / "result.csv"));
+    const std::string staged = output.staging_path("other.csv");
+    if (comm.is_root()) std::ofstream(staged) << "partial\n";
+    output.mark_failed("solver diverged");
+    comm.barrier();
+    EXPECT_TRUE(fs::exists(dir / "other.csv.part"));
+    EXPECT_FALSE(fs::exists(dir / "other.csv"));
+    EXPECT_NE(read(dir / "FAILED.txt").find("solver diverged"), std::string::npos);
+  }
+  comm.barrier();
+  {
+    // The next run clears the failure marker and the partial files.
+    OutputDirectory output(dir.string(), comm);
+    EXPECT_FALSE(fs::exists(dir / "FAILED.txt"));
+    EXPECT_FALSE(fs::exists(dir / "other.csv.part"));
+  }
+}
+
+TEST(ExodusWriter, FieldsGatheredFromAllRanksReadBack) {
+  const Communicator comm;
+  BoxSpec spec;
+  spec.elements = {4, 3, 2};
+  const Mesh mesh = generate_box(spec);
+  const MeshPartition partition(mesh, comm, PartitionMethod::multijagged);
+  // Nodal field: x + 10 y + 100 z of each owned node, three components (value, 2 value, 3 value).
+  std::vector<double> owned;
+  for (LocalIndex n = 0; n < partition.n_owned_nodes(); ++n) {
+    const double* c = partition.coordinates(n);
+    const double value = c[0] + 10 * c[1] + 100 * c[2];
+    for (int k = 1; k <= 3; ++k) owned.push_back(k * value);
+  }
+  std::vector<double> element_values;
+  for (const auto& block : partition.blocks()) {
+    for (GlobalIndex e : block.elements) element_values.push_back(1000.0 + e);
+  }
+  const auto nodal = gather_node_field(partition, owned, 3);
+  const auto element = gather_element_field(partition, element_values, 1);
+  const auto dir = shared_scratch("exodus", comm);
+  if (comm.is_root()) fs::create_directories(dir);
+  comm.barrier();
+  const std::string path = (dir / "result.exo").string();
+  {
+    ExodusWriter writer(path, mesh, "test", {"displacement_x", "displacement_y", "displacement_z"},
+                        {"marker"}, comm.is_root());
+    writer.write_step(0.5, nodal, element);
+    writer.write_step(1.0, nodal, element);
+    writer.close();
+  }
+  comm.barrier();
+  // Geometry and sets read back with railfe's reader...
+  const Mesh back = read_exodus_mesh(path);
+  EXPECT_EQ(back.coordinates, mesh.coordinates);
+  EXPECT_EQ(back.blocks[0].connectivity, mesh.blocks[0].connectivity);
+  EXPECT_EQ(back.node_set("zmax", "", "").nodes, mesh.node_set("zmax", "", "").nodes);
+  EXPECT_EQ(back.side_set("xmin", "", "").sides.size(), mesh.side_set("xmin", "", "").sides.size());
+  // ...and the fields with the Exodus library's own calls.
+  int cpu = 8, io = 0;
+  float version = 0;
+  const int id = ex_open(path.c_str(), EX_READ, &cpu, &io, &version);
+  ASSERT_GE(id, 0);
+  EXPECT_EQ(ex_inquire_int(id, EX_INQ_TIME), 2);
+  std::vector<double> y(mesh.n_nodes()), marker(mesh.n_elements());
+  ASSERT_GE(ex_get_var(id, 2, EX_NODAL, 2, 1, mesh.n_nodes(), y.data()), 0);
+  ASSERT_GE(ex_get_var(id, 2, EX_ELEM_BLOCK, 1, 1, mesh.n_elements(), marker.data()), 0);
+  char name[64] = {0};
+  ex_get_variable_name(id, EX_NODAL, 1, name);
+  ex_close(id);
+  EXPECT_STREQ(name, "displacement_x");
+  for (GlobalIndex n = 0; n < mesh.n_nodes(); ++n) {
+    const double value = mesh.coordinates[3 * n] + 10 * mesh.coordinates[3 * n + 1] +
+                         100 * mesh.coordinates[3 * n + 2];
+    EXPECT_DOUBLE_EQ(y[n], 2 * value);
+  }
+  for (GlobalIndex e = 0; e < mesh.n_elements(); ++e) EXPECT_DOUBLE_EQ(marker[e], 1000.0 + e);
+}
+
+}  // namespace
+}  // namespace railfe
