@@ -1,17 +1,20 @@
 #!/usr/bin/env bash
 # Runs a deck that must be refused and checks how: the exit status, the message (each line
 # "<!-- expect: TEXT -->" of the deck must appear, the error once however many ranks run), and
-# that nothing looking like complete results is left behind.
+# that nothing looking like complete results is left behind. A deck that does not exist (to test
+# exactly that) takes its expectations from DECK with .xml replaced by .expect.
 # usage: bad_input_case.sh RAILFE RANKS DECK OUTPUT_DIR [MPIEXEC ARGS...]
 set -u
 railfe=$1 ranks=$2 deck=$3 output=$4
 shift 4
 rm -rf "$output"
+expectations=$deck
+[[ -f "$deck" ]] || expectations=${deck%.xml}.expect
 log=$(mktemp)
 "$@" -np "$ranks" "$railfe" "$deck" --output "$output" --quiet >"$log" 2>&1
 status=$?
 cat "$log"
-expected_status=$(sed -n 's/.*<!-- exit: \([0-9]*\) -->.*/\1/p' "$deck" | head -n 1)
+expected_status=$(sed -n 's/.*<!-- exit: \([0-9]*\) -->.*/\1/p' "$expectations" | head -n 1)
 expected_status=${expected_status:-1}
 failed=0
 if [[ $status -ne $expected_status ]]; then
@@ -23,7 +26,7 @@ while IFS= read -r text; do
     echo "FAIL: message lacks: $text"
     failed=1
   fi
-done < <(sed -n 's/.*<!-- expect: \(.*\) -->.*/\1/p' "$deck")
+done < <(sed -n 's/.*<!-- expect: \(.*\) -->.*/\1/p' "$expectations")
 count=$(grep -c '^railfe: ' "$log")
 if [[ $count -ne 1 ]]; then
   echo "FAIL: the error was printed $count times (once expected)"

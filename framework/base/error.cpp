@@ -60,6 +60,20 @@ std::string closest_name(const std::string& name, const std::vector<std::string>
   return best_distance <= limit ? best : std::string();
 }
 
+std::string essential_line(const std::string& message) {
+  std::string best;
+  std::size_t start = 0;
+  while (start < message.size()) {
+    const std::size_t end = message.find('\n', start);
+    const std::string line =
+        message.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    if (line.find_first_not_of(" \t\r") != std::string::npos) best = line;
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return best;
+}
+
 std::string quoted_list(const std::vector<std::string>& names, std::size_t max_shown) {
   if (names.empty()) return "(none)";
   std::string text;

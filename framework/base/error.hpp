@@ -37,6 +37,10 @@ std::string format_input_message(const std::string& source, const std::string& p
 /// close enough to be a plausible misspelling.
 std::string closest_name(const std::string& name, const std::vector<std::string>& candidates);
 
+/// The part of a multi-line library message that says what went wrong: its last non-empty line
+/// (Trilinos messages open with file:line headers and "Throw test that evaluated to true").
+std::string essential_line(const std::string& message);
+
 /// Joins names as "'a', 'b', 'c'" for messages; long lists are shortened with a count.
 std::string quoted_list(const std::vector<std::string>& names, std::size_t max_shown = 12);
 

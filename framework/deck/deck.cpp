@@ -126,7 +126,7 @@ Deck parse_deck(const std::string& xml_text, const std::string& source,
     Teuchos::StringInputSource input(xml_text);
     root = input.getObject();
   } catch (const std::exception& error) {
-    throw_input_error(source, "", std::string("malformed XML: ") + error.what(),
+    throw_input_error(source, "", "malformed XML: " + essential_line(error.what()),
                       "a Teuchos ParameterList XML document");
   }
   if (root.isEmpty() || root.getTag() != "ParameterList") {
@@ -138,11 +138,8 @@ Deck parse_deck(const std::string& xml_text, const std::string& source,
     Teuchos::XMLParameterListReader reader;
     deck.parameters = Teuchos::rcp(new Teuchos::ParameterList(reader.toParameterList(root)));
   } catch (const std::exception& error) {
-    // Teuchos reports bad values (type="double" value="abc", unknown types) here.
-    std::string message = error.what();
-    const auto newline = message.find_last_not_of("\n ");
-    message = message.substr(0, newline + 1);
-    throw_input_error(source, "", "malformed parameter: " + message,
+    // Teuchos reports unknown types and the like here.
+    throw_input_error(source, "", "malformed parameter: " + essential_line(error.what()),
                       "types double, int, bool, string, Array(double), Array(int), Array(string)");
   }
   return deck;

@@ -21,7 +21,7 @@ ElementType element_type_from_exodus(std::string name, int nodes, const std::str
     return ElementType::beam2;
   }
   if (name.rfind("SPHERE", 0) == 0 && nodes == 1) return ElementType::point_mass;
-  throw_input_error(path, "block '" + block + "'",
+  throw_input_error(path, "block " + block,
                     "element type " + name + " with " + std::to_string(nodes) +
                         " nodes is not supported",
                     "HEX8, BAR2/BEAM2, SPHERE");

@@ -289,7 +289,7 @@ void build_side_sets(const GmshContent& content, Mesh& mesh) {
       std::sort(quad.begin(), quad.end());
       const Side side = wanted.at(quad);
       if (side.element < 0) {
-        throw_input_error(mesh.source, "physical surface '" + name + "'",
+        throw_input_error(mesh.source, "physical surface " + name,
                           "a quadrangle is not a face of any hexahedron",
                           "surfaces that bound the meshed volumes");
       }

@@ -46,7 +46,7 @@ void check_connectivity(const Mesh& mesh) {
     for (GlobalIndex e = 0; e < block.n_elements(); ++e) {
       const int count = block.n_element_nodes(e);
       if ((expected > 0 && count != expected) || count == 0) {
-        throw_input_error(mesh.source, "block '" + block.name + "'",
+        throw_input_error(mesh.source, "block " + block.name,
                           "element " + std::to_string(block.first_element + e + 1) + " has " +
                               std::to_string(count) + " nodes",
                           std::to_string(expected) + " nodes for " +
@@ -55,7 +55,7 @@ void check_connectivity(const Mesh& mesh) {
       const GlobalIndex* nodes = block.element_nodes(e);
       for (int a = 0; a < count; ++a) {
         if (nodes[a] < 0 || nodes[a] >= n_nodes) {
-          throw_input_error(mesh.source, "block '" + block.name + "'",
+          throw_input_error(mesh.source, "block " + block.name,
                             "element " + std::to_string(block.first_element + e + 1) +
                                 " refers to node " + std::to_string(nodes[a] + 1) +
                                 ", which does not exist",
@@ -82,7 +82,7 @@ void check_hex8_shapes(const Mesh& mesh) {
       for (int a = 0; a < 8; ++a) problem << " " << nodes[a] + 1;
       problem << ") is " << (quality < -1e-8 ? "inverted" : "degenerate")
               << ": Jacobian quality " << quality << " at an integration point";
-      throw_input_error(mesh.source, "block '" + block.name + "'", problem.str(),
+      throw_input_error(mesh.source, "block " + block.name, problem.str(),
                         "positive Jacobians at the integration points (nodes 0-3 counter-"
                         "clockwise seen from nodes 4-7, no collapsed edges or faces)");
     }
@@ -95,7 +95,7 @@ void check_sets(const Mesh& mesh) {
   for (const auto& set : mesh.node_sets) {
     for (GlobalIndex node : set.nodes) {
       if (node < 0 || node >= n_nodes) {
-        throw_input_error(mesh.source, "node set '" + set.name + "'",
+        throw_input_error(mesh.source, "node set " + set.name,
                           "refers to node " + std::to_string(node + 1) + ", which does not exist",
                           "node ids 1.." + std::to_string(n_nodes));
       }
@@ -104,14 +104,14 @@ void check_sets(const Mesh& mesh) {
   for (const auto& set : mesh.side_sets) {
     for (const Side& side : set.sides) {
       if (side.element < 0 || side.element >= n_elements) {
-        throw_input_error(mesh.source, "side set '" + set.name + "'",
+        throw_input_error(mesh.source, "side set " + set.name,
                           "refers to element " + std::to_string(side.element + 1) +
                               ", which does not exist",
                           "element ids 1.." + std::to_string(n_elements));
       }
       const auto& block = mesh.blocks[mesh.block_of(side.element)];
       if (block.type != ElementType::hex8 || side.face < 0 || side.face > 5) {
-        throw_input_error(mesh.source, "side set '" + set.name + "'",
+        throw_input_error(mesh.source, "side set " + set.name,
                           "refers to side " + std::to_string(side.face + 1) + " of element " +
                               std::to_string(side.element + 1) + " (" +
                               element_type_name(block.type) + ")",

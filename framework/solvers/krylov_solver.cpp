@@ -20,20 +20,6 @@ namespace {
 // units of round-off of the given ones.
 constexpr double kRoundOffBackwardError = 1e-14;
 
-// Trilinos exception texts start with a file:line header; the last non-empty line says what.
-std::string essential_line(const std::string& text) {
-  std::string best;
-  std::size_t start = 0;
-  while (start < text.size()) {
-    const std::size_t end = text.find('\n', start);
-    std::string line = text.substr(start, end == std::string::npos ? std::string::npos : end - start);
-    if (line.find_first_not_of(" \t") != std::string::npos) best = line;
-    if (end == std::string::npos) break;
-    start = end + 1;
-  }
-  return best;
-}
-
 class KrylovSolver : public LinearSolver {
  public:
   explicit KrylovSolver(const KrylovSettings& settings) : settings_(settings) {}

@@ -54,10 +54,19 @@ ParameterSpec expectation_parameters() {
                       Range::positive());
   check.real("Absolute floor", 0.0, "Allowed |difference| when the expected value is near zero.",
              "", Range::non_negative());
+  ParameterSpec parallel("How closely runs on different numbers of ranks must agree.");
+  parallel.real("Relative tolerance", 1e-8, "Normwise relative tolerance per quantity.", "",
+                Range::positive());
+  parallel.real("Absolute floor", 0.0,
+                "Differences below this always pass (for quantities that are zero up to "
+                "round-off, such as the sum of self-equilibrated reactions).",
+                "", Range::non_negative());
   ParameterSpec spec("Expected results of a regression case.");
   spec.required_text("Requirement", "The requirement this case protects.");
   spec.text("Documentation", "", "The docs page that derives the expected values.");
   spec.named_sublists("Checks", check, "The checks, each under a descriptive name.");
+  spec.sublist("Parallel agreement", parallel,
+               "Tolerance of the comparison between the 1-rank and 2-rank runs.");
   return spec;
 }
 
@@ -196,6 +205,13 @@ std::vector<CheckOutcome> evaluate_expectations(const std::string& expected_file
                                 "Checks/" + name));
   }
   return outcomes;
+}
+
+DiffTolerance parallel_tolerance(const std::string& expected_file) {
+  Deck deck = read_deck(expected_file, Communicator(MPI_COMM_SELF));
+  validate_and_complete(*deck.parameters, *expectation_parameters().list(), deck.source, "");
+  const auto& parallel = deck.parameters->sublist("Parallel agreement");
+  return {parallel.get<double>("Relative tolerance"), parallel.get<double>("Absolute floor")};
 }
 
 bool report_outcomes(std::ostream& out, const std::vector<CheckOutcome>& outcomes) {

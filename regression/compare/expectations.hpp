@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "framework/deck/parameter_spec.hpp"
+#include "regression/compare/directory_diff.hpp"
 
 namespace railfe {
 
@@ -35,6 +36,10 @@ struct CheckOutcome {
 std::vector<CheckOutcome> evaluate_expectations(const std::string& expected_file,
                                                 const std::string& results_directory,
                                                 std::string* requirement);
+
+/// The tolerance for comparing runs on different numbers of ranks that \p expected_file asks for
+/// (its "Parallel agreement" sublist; 1e-8 relative and no floor by default).
+DiffTolerance parallel_tolerance(const std::string& expected_file);
 
 /// Prints the outcomes as a table; returns true if every check passed.
 bool report_outcomes(std::ostream& out, const std::vector<CheckOutcome>& outcomes);

@@ -2,8 +2,10 @@
 //
 //   railfe-compare check EXPECTED.xml RESULTS_DIR
 //       evaluates every check of a case's expected-results file; exit 0 if all pass.
-//   railfe-compare diff REFERENCE_DIR CANDIDATE_DIR [--relative R] [--floor F]
-//       compares every CSV and Exodus file of two runs (e.g. 1 and 2 MPI ranks).
+//   railfe-compare diff REFERENCE_DIR CANDIDATE_DIR [--expected EXPECTED.xml] [--relative R]
+//                       [--floor F]
+//       compares every CSV and Exodus file of two runs (e.g. 1 and 2 MPI ranks), with the
+//       tolerance of the case's "Parallel agreement" or the one given.
 #include <mpi.h>
 
 #include <cstdio>
@@ -19,7 +21,8 @@ namespace {
 
 const char* kUsage =
     "usage: railfe-compare check EXPECTED.xml RESULTS_DIR\n"
-    "       railfe-compare diff REFERENCE_DIR CANDIDATE_DIR [--relative R] [--floor F]\n";
+    "       railfe-compare diff REFERENCE_DIR CANDIDATE_DIR [--expected EXPECTED.xml]\n"
+    "                      [--relative R] [--floor F]\n";
 
 int check(const std::string& expected, const std::string& directory) {
   std::string requirement;
@@ -35,7 +38,9 @@ int diff(int argc, char** argv) {
   for (int i = 4; i + 1 < argc; i += 2) {
     const std::string option = argv[i];
     const double value = std::atof(argv[i + 1]);
-    if (option == "--relative") {
+    if (option == "--expected") {
+      tolerance = railfe::parallel_tolerance(argv[i + 1]);
+    } else if (option == "--relative") {
       tolerance.relative = value;
     } else if (option == "--floor") {
       tolerance.floor = value;
