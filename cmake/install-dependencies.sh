@@ -4,10 +4,11 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build git
+  build-essential cmake ninja-build git clang-format
   trilinos-all-dev libptscotch-dev libscotch-dev   # Trilinos 13.2 and what its CMake targets link
   libexodusii-dev libnetcdf-dev netcdf-bin          # Exodus II 6.02 over netCDF (ncdump for checks)
   libsuitesparse-dev libmetis-dev                   # CHOLMOD supernodal Cholesky with METIS ordering
+  libopenblas0-serial                               # optimized BLAS/LAPACK (CHOLMOD: 10x over reference BLAS)
   libeigen3-dev libmuparser-dev                     # small dense element math; deck expressions
   libopenmpi-dev openmpi-bin libgtest-dev
   gmsh python3 python3-matplotlib python3-numpy     # meshing; charts and studies

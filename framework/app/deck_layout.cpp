@@ -21,7 +21,8 @@ namespace {
 
 std::vector<Choice> module_choices(const ModuleRegistry& registry) {
   std::vector<Choice> choices;
-  for (const auto& module : registry.modules()) choices.push_back({module.name, module.summary});
+  for (const auto& module : registry.modules())
+    choices.push_back({module.name, module.summary});
   return choices;
 }
 
@@ -81,7 +82,8 @@ void validate_deck(Deck& deck, const ModuleRegistry& registry) {
     if (module == nullptr) {
       std::string problem = "unknown module '" + module_name + "'";
       const std::string guess = closest_name(module_name, names);
-      if (!guess.empty()) problem += " (did you mean '" + guess + "'?)";
+      if (!guess.empty())
+        problem += " (did you mean '" + guess + "'?)";
       throw_input_error(deck.source, path + "/Module", problem, quoted_list(names));
     }
     validate_and_complete(step, *step_parameters(*module, registry).list(), deck.source, path);
@@ -97,14 +99,17 @@ bool describe_deck(std::ostream& out, const ModuleRegistry& registry, const std:
     found = true;
   }
   for (const auto& section : registry.sections()) {
-    if (!only.empty() && only != section.name) continue;
+    if (!only.empty() && only != section.name)
+      continue;
     describe_parameters(out, *section.parameters().list(), section.name, section.summary, format);
     found = true;
   }
   for (const auto& module : registry.modules()) {
-    if (!only.empty() && only != module.name) continue;
+    if (!only.empty() && only != module.name)
+      continue;
     describe_parameters(out, *step_parameters(module, registry).list(),
-                        "Steps/<name> with Module = " + module.name, module.summary, format);
+                        "Steps/<" + module.name + " step>",
+                        "A step with Module = '" + module.name + "': " + module.summary, format);
     found = true;
   }
   return found;

@@ -52,7 +52,8 @@ Arguments parse(int argc, char** argv) {
       arguments.markdown = true;
     } else if (arg == "--describe") {
       arguments.describe = true;
-      if (i + 1 < argc && argv[i + 1][0] != '-') arguments.describe_target = argv[++i];
+      if (i + 1 < argc && argv[i + 1][0] != '-')
+        arguments.describe_target = argv[++i];
     } else if (arg == "--output") {
       if (i + 1 >= argc) {
         arguments.problem = "--output needs a directory";
@@ -67,8 +68,8 @@ Arguments parse(int argc, char** argv) {
       arguments.problem = "more than one deck given ('" + arguments.deck + "' and '" + arg + "')";
     }
   }
-  if (arguments.problem.empty() && !arguments.help && !arguments.version &&
-      !arguments.describe && arguments.deck.empty()) {
+  if (arguments.problem.empty() && !arguments.help && !arguments.version && !arguments.describe &&
+      arguments.deck.empty()) {
     arguments.problem = "no deck given";
   }
   return arguments;
@@ -85,15 +86,18 @@ int main(int argc, char** argv) {
     railfe::register_physics(registry);
     const Arguments arguments = parse(argc, argv);
     if (!arguments.problem.empty()) {
-      if (root) std::fprintf(stderr, "railfe: %s\n\n%s", arguments.problem.c_str(), kUsage);
+      if (root)
+        std::fprintf(stderr, "railfe: %s\n\n%s", arguments.problem.c_str(), kUsage);
       return railfe::kBadInput;
     }
     if (arguments.help) {
-      if (root) std::printf("%s", kUsage);
+      if (root)
+        std::printf("%s", kUsage);
       return railfe::kSuccess;
     }
     if (arguments.version) {
-      if (root) std::printf("railfe 0.1.0 (Trilinos 13.2)\n");
+      if (root)
+        std::printf("railfe 0.1.0 (Trilinos 13.2)\n");
       return railfe::kSuccess;
     }
     if (arguments.describe) {
@@ -104,12 +108,14 @@ int main(int argc, char** argv) {
         if (root) {
           std::fprintf(stderr, "railfe: --describe: nothing is called '%s'; modules: ",
                        arguments.describe_target.c_str());
-          for (const auto& name : registry.module_names()) std::fprintf(stderr, "%s ", name.c_str());
+          for (const auto& name : registry.module_names())
+            std::fprintf(stderr, "%s ", name.c_str());
           std::fprintf(stderr, "(or a section name, or 'framework')\n");
         }
         return railfe::kBadInput;
       }
-      if (root) std::cout << text.str();
+      if (root)
+        std::cout << text.str();
       return railfe::kSuccess;
     }
     railfe::RunOptions options{arguments.deck, arguments.output, arguments.quiet};
@@ -117,7 +123,8 @@ int main(int argc, char** argv) {
   } catch (const std::exception& error) {
     // Only a programming error gets here, possibly on one rank: say where, then stop them all.
     std::fprintf(stderr, "railfe: internal error on rank %d: %s\n", comm.rank(), error.what());
-    if (comm.n_ranks() > 1) MPI_Abort(MPI_COMM_WORLD, railfe::kInternalError);
+    if (comm.n_ranks() > 1)
+      MPI_Abort(MPI_COMM_WORLD, railfe::kInternalError);
     return railfe::kInternalError;
   }
 }

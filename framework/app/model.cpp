@@ -24,7 +24,8 @@ bool Model::has_section(const std::string& name) const {
 
 const DofMap& Model::dofs(int dofs_per_node) {
   auto& map = dof_maps_[dofs_per_node];
-  if (!map) map = std::make_unique<DofMap>(*partition_, dofs_per_node);
+  if (!map)
+    map = std::make_unique<DofMap>(*partition_, dofs_per_node);
   return *map;
 }
 

@@ -17,14 +17,16 @@ void ModuleRegistry::add_section(SectionDescriptor section) {
 
 const ModuleDescriptor* ModuleRegistry::find_module(const std::string& name) const {
   for (const auto& module : modules_) {
-    if (module.name == name) return &module;
+    if (module.name == name)
+      return &module;
   }
   return nullptr;
 }
 
 std::vector<std::string> ModuleRegistry::module_names() const {
   std::vector<std::string> names;
-  for (const auto& module : modules_) names.push_back(module.name);
+  for (const auto& module : modules_)
+    names.push_back(module.name);
   return names;
 }
 

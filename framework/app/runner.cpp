@@ -16,9 +16,11 @@ namespace railfe {
 namespace {
 
 std::string results_directory(const RunOptions& options, const Deck& deck) {
-  if (!options.output.empty()) return options.output;
+  if (!options.output.empty())
+    return options.output;
   const auto configured = deck.parameters->sublist("Output").get<std::string>("Directory");
-  if (!configured.empty()) return deck.resolve(configured);
+  if (!configured.empty())
+    return deck.resolve(configured);
   return std::filesystem::path(deck.source).stem().string() + "_results";
 }
 
@@ -40,10 +42,12 @@ void write_summary(const RunSummary& summary, OutputDirectory& output, const Com
                    bool quiet) {
   const std::string text_path = output.staging_path("summary.txt");
   const std::string json_path = output.staging_path("summary.json");
-  if (!comm.is_root()) return;
+  if (!comm.is_root())
+    return;
   std::ofstream(text_path) << summary.text();
   std::ofstream(json_path) << summary.json();
-  if (!quiet) std::printf("\n%s", summary.text().c_str());
+  if (!quiet)
+    std::printf("\n%s", summary.text().c_str());
 }
 
 int run(const RunOptions& options, const ModuleRegistry& registry, const Communicator& comm,
@@ -76,15 +80,16 @@ int run(const RunOptions& options, const ModuleRegistry& registry, const Communi
   output = std::make_unique<OutputDirectory>(results_directory(options, model.deck()), comm);
   {
     for (auto& prepared : steps) {
-      StepContext context{model, prepared.name, prepared.path, *prepared.parameters,
-                          *output, summary, quiet};
+      StepContext context{model,   prepared.name, prepared.path, *prepared.parameters,
+                          *output, summary,       quiet};
       comm.run_collectively([&] { prepared.step->check(context); });
     }
   }
 
   const auto& title = model.deck().parameters->get<std::string>("Title");
   summary.add("Run", "deck", options.deck);
-  if (!title.empty()) summary.add("Run", "title", title);
+  if (!title.empty())
+    summary.add("Run", "title", title);
   summary.add("Run", "started", today());
   summary.add("Run", "MPI ranks", comm.n_ranks());
   summary.add("Run", "results", output->path());
@@ -106,8 +111,8 @@ int run(const RunOptions& options, const ModuleRegistry& registry, const Communi
       std::fflush(stdout);
     }
     phase.restart();
-    StepContext context{model, prepared.name, prepared.path, *prepared.parameters,
-                        *output, summary, quiet};
+    StepContext context{model,   prepared.name, prepared.path, *prepared.parameters,
+                        *output, summary,       quiet};
     prepared.step->run(context);
     summary.add("Wall time", "step " + prepared.name, phase.seconds(), "s");
   }
@@ -126,8 +131,10 @@ int run(const RunOptions& options, const ModuleRegistry& registry, const Communi
 int run_deck(const RunOptions& options, const ModuleRegistry& registry, const Communicator& comm) {
   std::unique_ptr<OutputDirectory> output;
   auto report = [&](const char* kind, const std::string& message, int status) {
-    if (output) output->mark_failed(message);
-    if (comm.is_root()) std::fprintf(stderr, "railfe: %s: %s\n", kind, message.c_str());
+    if (output)
+      output->mark_failed(message);
+    if (comm.is_root())
+      std::fprintf(stderr, "railfe: %s: %s\n", kind, message.c_str());
     return status;
   };
   try {

@@ -24,11 +24,12 @@ FeMatrix::FeMatrix(const DofMap& dofs) : dofs_(&dofs), storage_(std::make_unique
   const LocalIndex n_nodes = partition.n_local_nodes();
 
   Kokkos::DualView<std::size_t*, Tpetra::FECrsGraph<>::device_type> counts("row counts",
-                                                                         dpn * n_nodes);
+                                                                           dpn * n_nodes);
   auto host_counts = counts.h_view;
   for (LocalIndex node = 0; node < n_nodes; ++node) {
     const std::size_t degree = adjacency_offsets_[node + 1] - adjacency_offsets_[node];
-    for (int c = 0; c < dpn; ++c) host_counts(dpn * node + c) = dpn * degree;
+    for (int c = 0; c < dpn; ++c)
+      host_counts(dpn * node + c) = dpn * degree;
   }
   counts.modify_host();
   counts.sync_device();
@@ -39,10 +40,12 @@ FeMatrix::FeMatrix(const DofMap& dofs) : dofs_(&dofs), storage_(std::make_unique
   std::vector<GlobalIndex> column_dofs;
   column_dofs.reserve(static_cast<std::size_t>(dpn) * (n_nodes + column_only_nodes_.size()));
   for (LocalIndex node = 0; node < n_nodes; ++node) {
-    for (int c = 0; c < dpn; ++c) column_dofs.push_back(dpn * partition.global_node(node) + c);
+    for (int c = 0; c < dpn; ++c)
+      column_dofs.push_back(dpn * partition.global_node(node) + c);
   }
   for (GlobalIndex node : column_only_nodes_) {
-    for (int c = 0; c < dpn; ++c) column_dofs.push_back(dpn * node + c);
+    for (int c = 0; c < dpn; ++c)
+      column_dofs.push_back(dpn * node + c);
   }
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
   auto column_map = Teuchos::rcp(new TpetraMap(
@@ -56,7 +59,8 @@ FeMatrix::FeMatrix(const DofMap& dofs) : dofs_(&dofs), storage_(std::make_unique
   for (LocalIndex node = 0; node < n_nodes; ++node) {
     columns.clear();
     for (LocalIndex k = adjacency_offsets_[node]; k < adjacency_offsets_[node + 1]; ++k) {
-      for (int c = 0; c < dpn; ++c) columns.push_back(dpn * adjacency_[k] + c);
+      for (int c = 0; c < dpn; ++c)
+        columns.push_back(dpn * adjacency_[k] + c);
     }
     for (int c = 0; c < dpn; ++c) {
       storage_->graph->insertLocalIndices(
@@ -99,20 +103,23 @@ void FeMatrix::build_sparsity() {
   if (partition.comm().n_ranks() > 1) {
     for (const auto& block : mesh.blocks) {
       for (GlobalIndex e = 0; e < block.n_elements(); ++e) {
-        if (partition.element_ranks()[block.first_element + e] == rank) continue;
+        if (partition.element_ranks()[block.first_element + e] == rank)
+          continue;
         const GlobalIndex* nodes = block.element_nodes(e);
         const int count = block.n_element_nodes(e);
         bool touches_owned = false;
         for (int a = 0; a < count && !touches_owned; ++a) {
           touches_owned = partition.node_ranks()[nodes[a]] == rank;
         }
-        if (!touches_owned) continue;
+        if (!touches_owned)
+          continue;
         for (int a = 0; a < count; ++a) {
           LocalIndex column = partition.local_node(nodes[a]);
           if (column < 0) {
             auto [it, added] = column_only_index.emplace(
                 nodes[a], n_nodes + static_cast<LocalIndex>(column_only_nodes_.size()));
-            if (added) column_only_nodes_.push_back(nodes[a]);
+            if (added)
+              column_only_nodes_.push_back(nodes[a]);
             column = it->second;
           }
           element_nodes.push_back(column);
@@ -132,10 +139,12 @@ void FeMatrix::build_sparsity() {
   std::vector<LocalIndex> row_count(n_nodes + 1, 0);
   for (std::size_t e = 0; e < n_elements; ++e) {
     for (LocalIndex k = element_offsets[e]; k < element_offsets[e + 1]; ++k) {
-      if (has_row(e, element_nodes[k])) ++row_count[element_nodes[k] + 1];
+      if (has_row(e, element_nodes[k]))
+        ++row_count[element_nodes[k] + 1];
     }
   }
-  for (LocalIndex n = 0; n < n_nodes; ++n) row_count[n + 1] += row_count[n];
+  for (LocalIndex n = 0; n < n_nodes; ++n)
+    row_count[n + 1] += row_count[n];
   std::vector<LocalIndex> row_elements(row_count[n_nodes]);
   std::vector<LocalIndex> fill(row_count.begin(), row_count.end() - 1);
   for (std::size_t e = 0; e < n_elements; ++e) {
@@ -177,28 +186,33 @@ void FeMatrix::build_sparsity() {
     if (end - begin > 65535) {
       throw std::logic_error("railfe: FeMatrix: a node has more than 65535 neighbours");
     }
-    for (LocalIndex k = begin; k < end; ++k) slot_of[adjacency_[k]] = k - begin;
+    for (LocalIndex k = begin; k < end; ++k)
+      slot_of[adjacency_[k]] = k - begin;
     for (LocalIndex k = row_count[node]; k < row_count[node + 1]; ++k) {
       const LocalIndex e = row_elements[k];
-      if (remote[e]) continue;
+      if (remote[e])
+        continue;
       const LocalIndex first = element_offsets[e];
       const LocalIndex m = element_offsets[e + 1] - first;
       for (LocalIndex a = 0; a < m; ++a) {
-        if (element_nodes[first + a] != node) continue;
+        if (element_nodes[first + a] != node)
+          continue;
         std::uint16_t* slots = element_slots_.data() + element_slot_offsets_[e] + a * m;
         for (LocalIndex b = 0; b < m; ++b) {
           slots[b] = static_cast<std::uint16_t>(slot_of[element_nodes[first + b]]);
         }
       }
     }
-    for (LocalIndex k = begin; k < end; ++k) slot_of[adjacency_[k]] = -1;
+    for (LocalIndex k = begin; k < end; ++k)
+      slot_of[adjacency_[k]] = -1;
   }
 }
 
 void FeMatrix::begin_assembly() {
   storage_->matrix->beginAssembly();
   // A new matrix is zero already; clearing 1 kB per DOF again would cost a fifth of assembly.
-  if (assembled_once_) storage_->matrix->setAllToScalar(0.0);
+  if (assembled_once_)
+    storage_->matrix->setAllToScalar(0.0);
   assembled_once_ = true;
   auto local = storage_->matrix->getLocalMatrixHost();
   values_ = local.values.data();
@@ -222,14 +236,16 @@ void FeMatrix::check_layout() const {
     const LocalIndex degree = adjacency_offsets_[node + 1] - begin;
     for (int i = 0; i < dpn; ++i) {
       const std::size_t row = row_offsets_[dpn * node + i];
-      bool matches = row_offsets_[dpn * node + i + 1] - row == static_cast<std::size_t>(dpn * degree);
+      bool matches =
+          row_offsets_[dpn * node + i + 1] - row == static_cast<std::size_t>(dpn * degree);
       for (LocalIndex k = 0; k < degree && matches; ++k) {
         for (int j = 0; j < dpn; ++j) {
           matches = matches && entries(row + dpn * k + j) == dpn * adjacency_[begin + k] + j;
         }
       }
       if (!matches) {
-        throw std::logic_error("railfe: FeMatrix: the matrix layout differs from the sparsity built");
+        throw std::logic_error(
+            "railfe: FeMatrix: the matrix layout differs from the sparsity built");
       }
     }
   }
@@ -253,7 +269,8 @@ void scatter(int dpn_runtime, int nodes_runtime, const LocalIndex* nodes,
       const double* element_row = element_matrix + (dpn * a + i) * n_columns;
       for (int b = 0; b < n_nodes; ++b) {
         double* target = row + dpn * row_slots[b];
-        for (int j = 0; j < dpn; ++j) target[j] += element_row[dpn * b + j];
+        for (int j = 0; j < dpn; ++j)
+          target[j] += element_row[dpn * b + j];
       }
     }
   }

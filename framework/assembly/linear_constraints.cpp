@@ -1,9 +1,9 @@
 #include "framework/assembly/linear_constraints.hpp"
 
+#include <TpetraExt_MatrixMatrix.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Vector.hpp>
-#include <TpetraExt_MatrixMatrix.hpp>
 
 #include <algorithm>
 #include <map>
@@ -21,19 +21,21 @@ std::string LinearConstraints::dof_name(GlobalIndex dof) const {
   const int dpn = dofs_->dofs_per_node();
   static const char* kComponents = "xyz";
   const int component = static_cast<int>(dof % dpn);
-  const std::string name = dpn == 3 ? std::string(1, kComponents[component])
-                                    : std::to_string(component + 1);
+  const std::string name =
+      dpn == 3 ? std::string(1, kComponents[component]) : std::to_string(component + 1);
   return "node " + std::to_string(dof / dpn + 1) + " component " + name;
 }
 
 void LinearConstraints::prescribe(GlobalIndex dof, double value) {
   const LocalIndex local = dofs_->owned_map()->getLocalElement(dof);
-  if (local == Teuchos::OrdinalTraits<LocalIndex>::invalid()) return;
+  if (local == Teuchos::OrdinalTraits<LocalIndex>::invalid())
+    return;
   prescribed_.emplace_back(local, value);
 }
 
 void LinearConstraints::add_multipoint(const MultipointConstraint& constraint) {
-  if (dofs_->owned_map()->isNodeGlobalElement(constraint.slave)) multipoint_.push_back(constraint);
+  if (dofs_->owned_map()->isNodeGlobalElement(constraint.slave))
+    multipoint_.push_back(constraint);
 }
 
 void LinearConstraints::finalize() {
@@ -43,23 +45,25 @@ void LinearConstraints::finalize() {
   prescribed_.assign(unique.begin(), unique.end());
 
   std::vector<long long> my_slaves;
-  for (const auto& constraint : multipoint_) my_slaves.push_back(constraint.slave);
+  for (const auto& constraint : multipoint_)
+    my_slaves.push_back(constraint.slave);
   std::vector<long long> all_slaves = comm.all_gather(my_slaves);
   std::sort(all_slaves.begin(), all_slaves.end());
   std::string problem;
   const auto duplicate = std::adjacent_find(all_slaves.begin(), all_slaves.end());
   if (duplicate != all_slaves.end()) {
-    problem = format_input_message(source_, "", dof_name(*duplicate) +
-                                                    " is the slave of two multi-point constraints",
-                                   "each DOF constrained once");
+    problem = format_input_message(
+        source_, "", dof_name(*duplicate) + " is the slave of two multi-point constraints",
+        "each DOF constrained once");
   }
   const std::set<long long> slaves(all_slaves.begin(), all_slaves.end());
   for (const auto& constraint : multipoint_) {
     for (const auto& [master, coefficient] : constraint.masters) {
       if (problem.empty() && slaves.count(master)) {
-        problem = format_input_message(source_, "", dof_name(master) +
-                                                        " is both a master and a slave of "
-                                                        "multi-point constraints",
+        problem = format_input_message(source_, "",
+                                       dof_name(master) +
+                                           " is both a master and a slave of "
+                                           "multi-point constraints",
                                        "masters that are not themselves constrained");
       }
     }
@@ -67,11 +71,11 @@ void LinearConstraints::finalize() {
   const auto& owned = *dofs_->owned_map();
   for (const auto& [local, value] : prescribed_) {
     if (problem.empty() && slaves.count(owned.getGlobalElement(local))) {
-      problem = format_input_message(
-          source_, "",
-          dof_name(owned.getGlobalElement(local)) +
-              " is both prescribed and the slave of a multi-point constraint",
-          "prescribe the master instead");
+      problem =
+          format_input_message(source_, "",
+                               dof_name(owned.getGlobalElement(local)) +
+                                   " is both prescribed and the slave of a multi-point constraint",
+                               "prescribe the master instead");
     }
   }
   comm.agree(problem, true);
@@ -100,8 +104,10 @@ Teuchos::RCP<TpetraMatrix> LinearConstraints::apply(const Teuchos::RCP<TpetraMat
     }
   }
   Teuchos::RCP<TpetraMatrix> system = K;
-  if (n_multipoint_ > 0) system = eliminate_multipoint(K, f);
-  if (n_prescribed_ > 0) eliminate_prescribed(*system, f);
+  if (n_multipoint_ > 0)
+    system = eliminate_multipoint(K, f);
+  if (n_prescribed_ > 0)
+    eliminate_prescribed(*system, f);
   return system;
 }
 
@@ -109,7 +115,8 @@ Teuchos::RCP<TpetraMatrix> LinearConstraints::eliminate_multipoint(
     const Teuchos::RCP<TpetraMatrix>& K, TpetraVector& f) {
   const auto owned = dofs_->owned_map();
   std::map<GlobalIndex, const MultipointConstraint*> by_slave;
-  for (const auto& constraint : multipoint_) by_slave[constraint.slave] = &constraint;
+  for (const auto& constraint : multipoint_)
+    by_slave[constraint.slave] = &constraint;
 
   transformation_ = Teuchos::rcp(new TpetraMatrix(owned, 1));
   shift_ = Teuchos::rcp(new TpetraVector(owned));
@@ -171,7 +178,8 @@ void LinearConstraints::eliminate_prescribed(TpetraMatrix& K, TpetraVector& f) {
   column_marker.doImport(marker, to_columns, Tpetra::INSERT);
   const auto is_column_prescribed = column_marker.getData(0);
   std::vector<char> is_row_prescribed(local_rows(K), 0);
-  for (const auto& entry : prescribed_) is_row_prescribed[entry.first] = 1;
+  for (const auto& entry : prescribed_)
+    is_row_prescribed[entry.first] = 1;
 
   K.resumeFill();
   auto local = K.getLocalMatrixHost();
@@ -192,7 +200,8 @@ void LinearConstraints::eliminate_prescribed(TpetraMatrix& K, TpetraVector& f) {
       }
     } else {
       for (auto k = begin; k < end; ++k) {
-        if (is_column_prescribed[local.graph.entries(k)] != 0.0) local.values(k) = 0.0;
+        if (is_column_prescribed[local.graph.entries(k)] != 0.0)
+          local.values(k) = 0.0;
       }
     }
   }
@@ -204,7 +213,8 @@ void LinearConstraints::eliminate_prescribed(TpetraMatrix& K, TpetraVector& f) {
 }
 
 void LinearConstraints::recover(TpetraVector& solution) const {
-  if (transformation_.is_null()) return;
+  if (transformation_.is_null())
+    return;
   TpetraVector reduced(solution, Teuchos::Copy);
   transformation_->apply(reduced, solution);
   solution.update(1.0, *shift_, 1.0);
@@ -212,7 +222,8 @@ void LinearConstraints::recover(TpetraVector& solution) const {
 
 void LinearConstraints::reactions(const TpetraVector& u, TpetraVector& r) const {
   r.putScalar(0.0);
-  if (reaction_columns_.is_null()) return;
+  if (reaction_columns_.is_null())
+    return;
   TpetraVector u_columns(reaction_columns_);
   TpetraImport to_columns(u.getMap(), reaction_columns_);
   u_columns.doImport(u, to_columns, Tpetra::INSERT);

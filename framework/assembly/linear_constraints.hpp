@@ -15,9 +15,9 @@ namespace railfe {
 
 /// u[slave] = Σ coefficient · u[master] + offset, over global DOF indices.
 struct MultipointConstraint {
-  GlobalIndex slave = 0;                                 ///< the DOF that is eliminated
-  std::vector<std::pair<GlobalIndex, double>> masters;   ///< (master DOF, coefficient)
-  double offset = 0;                                     ///< the constant b
+  GlobalIndex slave = 0;                                ///< the DOF that is eliminated
+  std::vector<std::pair<GlobalIndex, double>> masters;  ///< (master DOF, coefficient)
+  double offset = 0;                                    ///< the constant b
 };
 
 /// The constraints of one linear solve and how to apply and undo them.

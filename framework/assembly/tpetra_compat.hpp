@@ -11,7 +11,9 @@
 namespace railfe {
 
 /// Number of indices of \p map on this rank.
-inline std::size_t local_size(const Tpetra::Map<>& map) { return map.getNodeNumElements(); }
+inline std::size_t local_size(const Tpetra::Map<>& map) {
+  return map.getNodeNumElements();
+}
 
 /// Number of rows of \p matrix on this rank.
 inline std::size_t local_rows(const Tpetra::CrsMatrix<double>& matrix) {

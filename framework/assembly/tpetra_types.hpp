@@ -6,7 +6,6 @@
 
 #include <Teuchos_RCP.hpp>
 
-#include "framework/base/types.hpp"
 #include <Tpetra_CrsGraph_fwd.hpp>
 #include <Tpetra_CrsMatrix_fwd.hpp>
 #include <Tpetra_Export_fwd.hpp>
@@ -15,7 +14,7 @@
 #include <Tpetra_MultiVector_fwd.hpp>
 #include <Tpetra_Operator_fwd.hpp>
 #include <Tpetra_Vector_fwd.hpp>
-
+#include "framework/base/types.hpp"
 
 namespace railfe {
 

@@ -8,10 +8,13 @@ namespace railfe {
 std::string format_input_message(const std::string& source, const std::string& path,
                                  const std::string& problem, const std::string& allowed) {
   std::string message;
-  if (!source.empty()) message += source + ": ";
-  if (!path.empty()) message += "'" + path + "': ";
+  if (!source.empty())
+    message += source + ": ";
+  if (!path.empty())
+    message += "'" + path + "': ";
   message += problem;
-  if (!allowed.empty()) message += "; allowed: " + allowed;
+  if (!allowed.empty())
+    message += "; allowed: " + allowed;
   return message;
 }
 
@@ -30,7 +33,8 @@ std::string lower(std::string text) {
 
 std::size_t edit_distance(const std::string& a, const std::string& b) {
   std::vector<std::size_t> previous(b.size() + 1), current(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) previous[j] = j;
+  for (std::size_t j = 0; j <= b.size(); ++j)
+    previous[j] = j;
   for (std::size_t i = 1; i <= a.size(); ++i) {
     current[0] = i;
     for (std::size_t j = 1; j <= b.size(); ++j) {
@@ -55,7 +59,8 @@ std::string closest_name(const std::string& name, const std::vector<std::string>
       best = candidate;
     }
   }
-  // A third of the name's length (at least 2 edits) still reads as a typo; more is a different word.
+  // A third of the name's length (at least 2 edits) still reads as a typo; more is a different
+  // word.
   const std::size_t limit = std::max<std::size_t>(2, key.size() / 3);
   return best_distance <= limit ? best : std::string();
 }
@@ -67,22 +72,27 @@ std::string essential_line(const std::string& message) {
     const std::size_t end = message.find('\n', start);
     const std::string line =
         message.substr(start, end == std::string::npos ? std::string::npos : end - start);
-    if (line.find_first_not_of(" \t\r") != std::string::npos) best = line;
-    if (end == std::string::npos) break;
+    if (line.find_first_not_of(" \t\r") != std::string::npos)
+      best = line;
+    if (end == std::string::npos)
+      break;
     start = end + 1;
   }
   return best;
 }
 
 std::string quoted_list(const std::vector<std::string>& names, std::size_t max_shown) {
-  if (names.empty()) return "(none)";
+  if (names.empty())
+    return "(none)";
   std::string text;
   const std::size_t shown = std::min(names.size(), max_shown);
   for (std::size_t i = 0; i < shown; ++i) {
-    if (i > 0) text += ", ";
+    if (i > 0)
+      text += ", ";
     text += "'" + names[i] + "'";
   }
-  if (shown < names.size()) text += " and " + std::to_string(names.size() - shown) + " more";
+  if (shown < names.size())
+    text += " and " + std::to_string(names.size() - shown) + " more";
   return text;
 }
 

@@ -15,50 +15,55 @@ Teuchos::RCP<const Teuchos::Comm<int>> Communicator::teuchos() const {
   return Teuchos::rcp(new Teuchos::MpiComm<int>(comm_));
 }
 
-void Communicator::barrier() const { MPI_Barrier(comm_); }
+void Communicator::barrier() const {
+  MPI_Barrier(comm_);
+}
 
 void Communicator::broadcast(std::string& text) const {
   unsigned long long size = text.size();
   MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG_LONG, 0, comm_);
   text.resize(size);
-  if (size > 0) MPI_Bcast(text.data(), static_cast<int>(size), MPI_CHAR, 0, comm_);
+  if (size > 0)
+    MPI_Bcast(text.data(), static_cast<int>(size), MPI_CHAR, 0, comm_);
 }
 
 void Communicator::broadcast(std::vector<double>& values) const {
   unsigned long long size = values.size();
   MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG_LONG, 0, comm_);
   values.resize(size);
-  if (size > 0) MPI_Bcast(values.data(), static_cast<int>(size), MPI_DOUBLE, 0, comm_);
+  if (size > 0)
+    MPI_Bcast(values.data(), static_cast<int>(size), MPI_DOUBLE, 0, comm_);
 }
 
-double Communicator::sum(double value) const {
-  double result = 0;
-  MPI_Allreduce(&value, &result, 1, MPI_DOUBLE, MPI_SUM, comm_);
+namespace {
+
+template <typename T>
+T all_reduce(T value, MPI_Datatype type, MPI_Op operation, MPI_Comm comm) {
+  T result{};
+  MPI_Allreduce(&value, &result, 1, type, operation, comm);
   return result;
+}
+
+}  // namespace
+
+double Communicator::sum(double value) const {
+  return all_reduce(value, MPI_DOUBLE, MPI_SUM, comm_);
 }
 
 long long Communicator::sum(long long value) const {
-  long long result = 0;
-  MPI_Allreduce(&value, &result, 1, MPI_LONG_LONG, MPI_SUM, comm_);
-  return result;
+  return all_reduce(value, MPI_LONG_LONG, MPI_SUM, comm_);
 }
 
 double Communicator::max(double value) const {
-  double result = 0;
-  MPI_Allreduce(&value, &result, 1, MPI_DOUBLE, MPI_MAX, comm_);
-  return result;
+  return all_reduce(value, MPI_DOUBLE, MPI_MAX, comm_);
 }
 
 long long Communicator::max(long long value) const {
-  long long result = 0;
-  MPI_Allreduce(&value, &result, 1, MPI_LONG_LONG, MPI_MAX, comm_);
-  return result;
+  return all_reduce(value, MPI_LONG_LONG, MPI_MAX, comm_);
 }
 
 double Communicator::min(double value) const {
-  double result = 0;
-  MPI_Allreduce(&value, &result, 1, MPI_DOUBLE, MPI_MIN, comm_);
-  return result;
+  return all_reduce(value, MPI_DOUBLE, MPI_MIN, comm_);
 }
 
 void Communicator::sum_in_place(std::vector<double>& values) const {
@@ -113,13 +118,16 @@ void Communicator::agree(const std::string& local_error, bool as_input_error) co
   const int mine = local_error.empty() ? n_ranks_ : rank_;
   int first_failing = n_ranks_;
   MPI_Allreduce(&mine, &first_failing, 1, MPI_INT, MPI_MIN, comm_);
-  if (first_failing == n_ranks_) return;
+  if (first_failing == n_ranks_)
+    return;
   std::string message = local_error;
   unsigned long long size = message.size();
   MPI_Bcast(&size, 1, MPI_UNSIGNED_LONG_LONG, first_failing, comm_);
   message.resize(size);
-  if (size > 0) MPI_Bcast(message.data(), static_cast<int>(size), MPI_CHAR, first_failing, comm_);
-  if (as_input_error) throw InputError(message);
+  if (size > 0)
+    MPI_Bcast(message.data(), static_cast<int>(size), MPI_CHAR, first_failing, comm_);
+  if (as_input_error)
+    throw InputError(message);
   throw RunError(message);
 }
 

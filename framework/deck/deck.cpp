@@ -21,7 +21,8 @@ namespace railfe {
 
 std::string Deck::resolve(const std::string& file_name) const {
   const std::filesystem::path file(file_name);
-  if (file.is_absolute() || directory.empty()) return file.string();
+  if (file.is_absolute() || directory.empty())
+    return file.string();
   return (std::filesystem::path(directory) / file).lexically_normal().string();
 }
 
@@ -29,15 +30,18 @@ namespace {
 
 bool parses_as_number(const std::string& text, bool integer) {
   const char* begin = text.c_str();
-  while (std::isspace(static_cast<unsigned char>(*begin))) ++begin;
+  while (std::isspace(static_cast<unsigned char>(*begin)))
+    ++begin;
   char* end = nullptr;
   if (integer) {
     std::strtoll(begin, &end, 10);
   } else {
     std::strtod(begin, &end);
   }
-  if (end == begin) return false;
-  while (std::isspace(static_cast<unsigned char>(*end))) ++end;
+  if (end == begin)
+    return false;
+  while (std::isspace(static_cast<unsigned char>(*end)))
+    ++end;
   return *end == '\0';
 }
 
@@ -49,7 +53,8 @@ std::string value_problem(const std::string& type, const std::string& value) {
   const bool integer = element == "int" || element == "long long";
   const bool real = element == "double" || element == "float";
   const bool flag = element == "bool";
-  if (!integer && !real && !flag) return "";
+  if (!integer && !real && !flag)
+    return "";
   std::vector<std::string> items;
   if (is_array) {
     const auto open = value.find('{'), close = value.rfind('}');
@@ -60,12 +65,14 @@ std::string value_problem(const std::string& type, const std::string& value) {
     std::size_t start = 0;
     while (start <= inner.size()) {
       const auto comma = inner.find(',', start);
-      items.push_back(inner.substr(start, comma == std::string::npos ? std::string::npos
-                                                                     : comma - start));
-      if (comma == std::string::npos) break;
+      items.push_back(
+          inner.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+      if (comma == std::string::npos)
+        break;
       start = comma + 1;
     }
-    if (items.size() == 1 && items[0].find_first_not_of(" \t") == std::string::npos) items.clear();
+    if (items.size() == 1 && items[0].find_first_not_of(" \t") == std::string::npos)
+      items.clear();
   } else {
     items.push_back(value);
   }
@@ -73,7 +80,8 @@ std::string value_problem(const std::string& type, const std::string& value) {
     if (flag) {
       std::string word;
       for (char c : item) {
-        if (!std::isspace(static_cast<unsigned char>(c))) word += static_cast<char>(std::tolower(c));
+        if (!std::isspace(static_cast<unsigned char>(c)))
+          word += static_cast<char>(std::tolower(c));
       }
       if (word != "true" && word != "false" && word != "1" && word != "0") {
         return "'" + item + "' is not a bool";
@@ -102,7 +110,8 @@ void check_duplicates(const Teuchos::XMLObject& node, const std::string& source,
     }
     const std::string name = child.getAttribute("name");
     if (tag == "Parameter" && child.hasAttribute("type") && child.hasAttribute("value")) {
-      const std::string problem = value_problem(child.getAttribute("type"), child.getAttribute("value"));
+      const std::string problem =
+          value_problem(child.getAttribute("type"), child.getAttribute("value"));
       if (!problem.empty()) {
         throw_input_error(source, join_path(path, name), "malformed parameter: " + problem,
                           "a value of type " + child.getAttribute("type"));
@@ -112,7 +121,8 @@ void check_duplicates(const Teuchos::XMLObject& node, const std::string& source,
       throw_input_error(source, join_path(path, name), "is given twice in the same list",
                         "each name once per list");
     }
-    if (tag == "ParameterList") check_duplicates(child, source, join_path(path, name));
+    if (tag == "ParameterList")
+      check_duplicates(child, source, join_path(path, name));
   }
 }
 

@@ -13,11 +13,25 @@ namespace railfe {
 namespace {
 
 std::string default_text(const Teuchos::ParameterEntry& entry, const ParameterRule& rule) {
-  if (rule.required()) return "required";
-  if (entry.isList()) return "";
+  if (rule.required())
+    return "required";
+  if (entry.isList())
+    return "";
   std::ostringstream out;
+  auto join = [&out](const auto& values) {
+    out << "{";
+    for (std::size_t i = 0; i < values.size(); ++i)
+      out << (i ? ", " : "") << values[i];
+    out << "}";
+  };
   if (entry.isType<std::string>()) {
     out << "'" << entry.getValue<std::string>(nullptr) << "'";
+  } else if (entry.isType<Teuchos::Array<double>>()) {
+    join(entry.getValue<Teuchos::Array<double>>(nullptr));
+  } else if (entry.isType<Teuchos::Array<int>>()) {
+    join(entry.getValue<Teuchos::Array<int>>(nullptr));
+  } else if (entry.isType<Teuchos::Array<std::string>>()) {
+    join(entry.getValue<Teuchos::Array<std::string>>(nullptr));
   } else if (entry.isType<bool>()) {
     out << (entry.getValue<bool>(nullptr) ? "true" : "false");
   } else {
@@ -44,19 +58,25 @@ void collect(const Teuchos::ParameterList& valid, const std::string& path, const
     const auto& entry = valid.entry(it);
     const std::string& name = valid.name(it);
     const ParameterRule* rule = rule_of(entry);
-    if (name == kAnyName && entry.isList()) nested.emplace_back(name, &entry);
-    if (rule == nullptr) continue;
+    if (name == kAnyName && entry.isList())
+      nested.emplace_back(name, &entry);
+    if (rule == nullptr)
+      continue;
     std::string allowed;
-    if (!entry.isList()) allowed = rule->describe_allowed();
+    if (!entry.isList() && rule->kind() != ParameterKind::text)
+      allowed = rule->describe_allowed();
     std::string type = rule->type_name();
-    if (rule->kind() == ParameterKind::named_sublists) type = "ParameterList of named sublists";
-    if (rule->kind() == ParameterKind::choice) type = "string (choice)";
+    if (rule->kind() == ParameterKind::named_sublists)
+      type = "ParameterList of named sublists";
+    if (rule->kind() == ParameterKind::choice)
+      type = "string (choice)";
     section.rows.push_back(
         {name, type, default_text(entry, *rule), allowed, rule->units(), entry.docString()});
     for (const auto& choice : rule->choices()) {
       section.choice_docs.push_back(name + " = '" + choice.value + "': " + choice.doc);
     }
-    if (entry.isList()) nested.emplace_back(name, &entry);
+    if (entry.isList())
+      nested.emplace_back(name, &entry);
   }
   sections.push_back(section);
   for (const auto& [name, entry] : nested) {
@@ -77,10 +97,14 @@ void collect(const Teuchos::ParameterList& valid, const std::string& path, const
 std::string escape_markdown(std::string text) {
   std::string result;
   for (char c : text) {
-    if (c == '|') result += "\\|";
-    else if (c == '<') result += "&lt;";
-    else if (c == '>') result += "&gt;";
-    else result += c;
+    if (c == '|')
+      result += "\\|";
+    else if (c == '<')
+      result += "&lt;";
+    else if (c == '>')
+      result += "&gt;";
+    else
+      result += c;
   }
   return result;
 }
@@ -88,16 +112,17 @@ std::string escape_markdown(std::string text) {
 }  // namespace
 
 void describe_parameters(std::ostream& out, const Teuchos::ParameterList& valid,
-                         const std::string& path, const std::string& title,
-                         DescribeFormat format) {
+                         const std::string& path, const std::string& title, DescribeFormat format) {
   std::vector<Section> sections;
   collect(valid, path, title, sections);
   for (const auto& section : sections) {
     const std::string heading = section.path.empty() ? "(top level)" : section.path;
     if (format == DescribeFormat::markdown) {
       out << "\n### " << escape_markdown(heading) << "\n\n";
-      if (!section.doc.empty()) out << escape_markdown(section.doc) << "\n\n";
-      if (section.rows.empty()) continue;
+      if (!section.doc.empty())
+        out << escape_markdown(section.doc) << "\n\n";
+      if (section.rows.empty())
+        continue;
       out << "| Parameter | Type | Default | Allowed | Units | Description |\n";
       out << "|---|---|---|---|---|---|\n";
       for (const auto& row : section.rows) {
@@ -107,20 +132,29 @@ void describe_parameters(std::ostream& out, const Teuchos::ParameterList& valid,
       }
       if (!section.choice_docs.empty()) {
         out << "\n";
-        for (const auto& line : section.choice_docs) out << "- " << escape_markdown(line) << "\n";
+        for (const auto& line : section.choice_docs)
+          out << "- " << escape_markdown(line) << "\n";
       }
     } else {
       out << "\n[" << heading << "]";
-      if (!section.doc.empty()) out << "  " << section.doc;
+      if (!section.doc.empty())
+        out << "  " << section.doc;
       out << "\n";
       for (const auto& row : section.rows) {
         out << "  " << row.name << " (" << row.type;
-        if (!row.units.empty()) out << ", " << row.units;
-        if (!row.default_value.empty()) out << ", default " << row.default_value;
-        if (!row.allowed.empty() && row.type != "string (choice)") out << ", " << row.allowed;
+        if (!row.units.empty())
+          out << ", " << row.units;
+        if (row.default_value == "required") {
+          out << ", required";
+        } else if (!row.default_value.empty()) {
+          out << ", default " << row.default_value;
+        }
+        if (!row.allowed.empty() && row.type != "string (choice)")
+          out << ", " << row.allowed;
         out << ")\n      " << row.doc << "\n";
       }
-      for (const auto& line : section.choice_docs) out << "      - " << line << "\n";
+      for (const auto& line : section.choice_docs)
+        out << "      - " << line << "\n";
     }
   }
 }

@@ -17,7 +17,6 @@ enum class DescribeFormat { text, markdown };
 /// and doc string. \p path is the list's place in the deck ("" for the top level), \p title the
 /// heading printed above it.
 void describe_parameters(std::ostream& out, const Teuchos::ParameterList& valid,
-                         const std::string& path, const std::string& title,
-                         DescribeFormat format);
+                         const std::string& path, const std::string& title, DescribeFormat format);
 
 }  // namespace railfe

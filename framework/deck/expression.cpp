@@ -43,6 +43,8 @@ double Expression::operator()(double x, double y, double z, double t) const {
   return state_->parser.Eval();
 }
 
-const std::string& Expression::text() const { return state_->text; }
+const std::string& Expression::text() const {
+  return state_->text;
+}
 
 }  // namespace railfe

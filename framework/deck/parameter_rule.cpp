@@ -10,17 +10,32 @@
 
 namespace railfe {
 
-Range Range::positive() { return Range{0.0, std::nullopt, false, true}; }
-Range Range::non_negative() { return Range{0.0, std::nullopt, true, true}; }
-Range Range::at_least(double low) { return Range{low, std::nullopt, true, true}; }
-Range Range::closed(double low, double high) { return Range{low, high, true, true}; }
-Range Range::closed_open(double low, double high) { return Range{low, high, true, false}; }
-Range Range::open(double low, double high) { return Range{low, high, false, false}; }
+Range Range::positive() {
+  return Range{0.0, std::nullopt, false, true};
+}
+Range Range::non_negative() {
+  return Range{0.0, std::nullopt, true, true};
+}
+Range Range::at_least(double low) {
+  return Range{low, std::nullopt, true, true};
+}
+Range Range::closed(double low, double high) {
+  return Range{low, high, true, true};
+}
+Range Range::closed_open(double low, double high) {
+  return Range{low, high, true, false};
+}
+Range Range::open(double low, double high) {
+  return Range{low, high, false, false};
+}
 
 bool Range::contains(double value) const {
-  if (!std::isfinite(value)) return false;
-  if (lower && (lower_inclusive ? value < *lower : value <= *lower)) return false;
-  if (upper && (upper_inclusive ? value > *upper : value >= *upper)) return false;
+  if (!std::isfinite(value))
+    return false;
+  if (lower && (lower_inclusive ? value < *lower : value <= *lower))
+    return false;
+  if (upper && (upper_inclusive ? value > *upper : value >= *upper))
+    return false;
   return true;
 }
 
@@ -33,9 +48,12 @@ std::string number_text(double value) {
 }  // namespace
 
 std::string Range::describe() const {
-  if (!lower && !upper) return "any finite number";
-  if (lower && !upper) return (lower_inclusive ? ">= " : "> ") + number_text(*lower);
-  if (!lower && upper) return (upper_inclusive ? "<= " : "< ") + number_text(*upper);
+  if (!lower && !upper)
+    return "any finite number";
+  if (lower && !upper)
+    return (lower_inclusive ? ">= " : "> ") + number_text(*lower);
+  if (!lower && upper)
+    return (upper_inclusive ? "<= " : "< ") + number_text(*upper);
   return std::string(lower_inclusive ? "[" : "(") + number_text(*lower) + ", " +
          number_text(*upper) + (upper_inclusive ? "]" : ")");
 }
@@ -51,16 +69,26 @@ ParameterRule::ParameterRule(ParameterKind kind, bool required, std::string unit
 
 std::string ParameterRule::type_name() const {
   switch (kind_) {
-    case ParameterKind::real: return "double";
-    case ParameterKind::integer: return "int";
-    case ParameterKind::text: return "string";
-    case ParameterKind::flag: return "bool";
-    case ParameterKind::choice: return "string";
-    case ParameterKind::real_array: return "Array(double)";
-    case ParameterKind::integer_array: return "Array(int)";
-    case ParameterKind::text_array: return "Array(string)";
-    case ParameterKind::sublist: return "ParameterList";
-    case ParameterKind::named_sublists: return "ParameterList";
+    case ParameterKind::real:
+      return "double";
+    case ParameterKind::integer:
+      return "int";
+    case ParameterKind::text:
+      return "string";
+    case ParameterKind::flag:
+      return "bool";
+    case ParameterKind::choice:
+      return "string";
+    case ParameterKind::real_array:
+      return "Array(double)";
+    case ParameterKind::integer_array:
+      return "Array(int)";
+    case ParameterKind::text_array:
+      return "Array(string)";
+    case ParameterKind::sublist:
+      return "ParameterList";
+    case ParameterKind::named_sublists:
+      return "ParameterList";
   }
   return "?";
 }
@@ -75,7 +103,8 @@ std::string ParameterRule::describe_allowed() const {
       return text;
     }
     case ParameterKind::real:
-    case ParameterKind::integer: return range_.describe();
+    case ParameterKind::integer:
+      return range_.describe();
     case ParameterKind::real_array:
     case ParameterKind::integer_array: {
       const std::string count =
@@ -83,9 +112,12 @@ std::string ParameterRule::describe_allowed() const {
       const bool bounded = range_.lower || range_.upper;
       return bounded ? count + ", each " + range_.describe() : count;
     }
-    case ParameterKind::text_array: return "one or more strings";
-    case ParameterKind::flag: return "true or false";
-    default: return type_name();
+    case ParameterKind::text_array:
+      return "one or more strings";
+    case ParameterKind::flag:
+      return "true or false";
+    default:
+      return type_name();
   }
 }
 
@@ -93,7 +125,8 @@ namespace {
 
 template <typename T>
 std::string check_array(const Teuchos::Array<T>& values, int required_size, const Range& range) {
-  if (values.empty()) return "is an empty array";
+  if (values.empty())
+    return "is an empty array";
   if (required_size > 0 && static_cast<int>(values.size()) != required_size) {
     return "has " + std::to_string(values.size()) + " entries";
   }
@@ -124,29 +157,34 @@ std::string ParameterRule::check(const Teuchos::ParameterEntry& entry) const {
       } else {
         return "has type " + entry.getAny(false).typeName() + "; expected double";
       }
-      if (!range_.contains(value)) return "value " + number_text(value) + " is out of range";
+      if (!range_.contains(value))
+        return "value " + number_text(value) + " is out of range";
       return "";
     }
     case ParameterKind::integer: {
-      if (!entry.isType<int>()) return "has type " + entry.getAny(false).typeName() + "; expected int";
+      if (!entry.isType<int>())
+        return "has type " + entry.getAny(false).typeName() + "; expected int";
       const int value = entry.getValue<int>(nullptr);
-      if (!range_.contains(value)) return "value " + std::to_string(value) + " is out of range";
+      if (!range_.contains(value))
+        return "value " + std::to_string(value) + " is out of range";
       return "";
     }
     case ParameterKind::text:
-      return entry.isType<std::string>() ? ""
-                                         : "has type " + entry.getAny(false).typeName() +
-                                               "; expected string";
+      return entry.isType<std::string>()
+                 ? ""
+                 : "has type " + entry.getAny(false).typeName() + "; expected string";
     case ParameterKind::flag:
-      return entry.isType<bool>() ? ""
-                                  : "has type " + entry.getAny(false).typeName() + "; expected bool";
+      return entry.isType<bool>()
+                 ? ""
+                 : "has type " + entry.getAny(false).typeName() + "; expected bool";
     case ParameterKind::choice: {
       if (!entry.isType<std::string>()) {
         return "has type " + entry.getAny(false).typeName() + "; expected string";
       }
       const auto value = entry.getValue<std::string>(nullptr);
       for (const auto& choice : choices_) {
-        if (choice.value == value) return "";
+        if (choice.value == value)
+          return "";
       }
       return "value '" + value + "' is not one of the choices";
     }
@@ -170,9 +208,10 @@ std::string ParameterRule::check(const Teuchos::ParameterEntry& entry) const {
         return "has type " + entry.getAny(false).typeName() + "; expected Array(string)";
       }
       return entry.getValue<Teuchos::Array<std::string>>(nullptr).empty() ? "is an empty array"
-                                                                           : "";
+                                                                          : "";
     case ParameterKind::sublist:
-    case ParameterKind::named_sublists: return "";
+    case ParameterKind::named_sublists:
+      return "";
   }
   return "";
 }
@@ -182,18 +221,20 @@ void ParameterRule::printDoc(const std::string& doc, std::ostream& out) const {
 }
 
 Teuchos::ParameterEntryValidator::ValidStringsList ParameterRule::validStringValues() const {
-  if (kind_ != ParameterKind::choice) return Teuchos::null;
+  if (kind_ != ParameterKind::choice)
+    return Teuchos::null;
   auto values = Teuchos::rcp(new Teuchos::Array<std::string>());
-  for (const auto& choice : choices_) values->push_back(choice.value);
+  for (const auto& choice : choices_)
+    values->push_back(choice.value);
   return values;
 }
 
 void ParameterRule::validate(const Teuchos::ParameterEntry& entry, const std::string& name,
                              const std::string& sublist_name) const {
   const std::string problem = check(entry);
-  TEUCHOS_TEST_FOR_EXCEPTION(!problem.empty(), Teuchos::Exceptions::InvalidParameterValue,
-                             sublist_name << "/" << name << ": " << problem << "; allowed: "
-                                          << describe_allowed());
+  TEUCHOS_TEST_FOR_EXCEPTION(
+      !problem.empty(), Teuchos::Exceptions::InvalidParameterValue,
+      sublist_name << "/" << name << ": " << problem << "; allowed: " << describe_allowed());
 }
 
 const ParameterRule* rule_of(const Teuchos::ParameterEntry& entry) {

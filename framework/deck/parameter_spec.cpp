@@ -28,8 +28,7 @@ Teuchos::ParameterEntry array_entry(const std::vector<T>& values) {
 }
 
 Teuchos::RCP<ParameterRule> rule(ParameterKind kind, bool required, const std::string& units = "",
-                                 Range range = {}, std::vector<Choice> choices = {},
-                                 int size = 0) {
+                                 Range range = {}, std::vector<Choice> choices = {}, int size = 0) {
   return Teuchos::rcp(new ParameterRule(kind, required, units, range, std::move(choices), size));
 }
 
@@ -86,16 +85,15 @@ ParameterSpec& ParameterSpec::required_choice(const std::string& name, std::vect
 
 ParameterSpec& ParameterSpec::real_array(const std::string& name,
                                          const std::vector<double>& default_value,
-                                         const std::string& doc, const std::string& units,
-                                         int size, Range range) {
+                                         const std::string& doc, const std::string& units, int size,
+                                         Range range) {
   add(name, array_entry(default_value), doc,
       rule(ParameterKind::real_array, false, units, range, {}, size));
   return *this;
 }
 
 ParameterSpec& ParameterSpec::required_real_array(const std::string& name, const std::string& doc,
-                                                  const std::string& units, int size,
-                                                  Range range) {
+                                                  const std::string& units, int size, Range range) {
   add(name, array_entry(std::vector<double>{}), doc,
       rule(ParameterKind::real_array, true, units, range, {}, size));
   return *this;
@@ -109,8 +107,7 @@ ParameterSpec& ParameterSpec::integer_array(const std::string& name,
   return *this;
 }
 
-ParameterSpec& ParameterSpec::required_text_array(const std::string& name,
-                                                  const std::string& doc) {
+ParameterSpec& ParameterSpec::required_text_array(const std::string& name, const std::string& doc) {
   add(name, array_entry(std::vector<std::string>{}), doc, rule(ParameterKind::text_array, true));
   return *this;
 }

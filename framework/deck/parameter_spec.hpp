@@ -50,8 +50,7 @@ class ParameterSpec {
                             Range range = {});
   /// An array of reals the deck must give.
   ParameterSpec& required_real_array(const std::string& name, const std::string& doc,
-                                     const std::string& units = "", int size = 0,
-                                     Range range = {});
+                                     const std::string& units = "", int size = 0, Range range = {});
   /// An optional array of integers.
   ParameterSpec& integer_array(const std::string& name, const std::vector<int>& default_value,
                                const std::string& doc, int size = 0, Range range = {});

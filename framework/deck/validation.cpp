@@ -18,7 +18,8 @@ namespace {
 std::vector<std::string> names_of(const Teuchos::ParameterList& list) {
   std::vector<std::string> names;
   for (auto it = list.begin(); it != list.end(); ++it) {
-    if (list.name(it) != kAnyName) names.push_back(list.name(it));
+    if (list.name(it) != kAnyName)
+      names.push_back(list.name(it));
   }
   return names;
 }
@@ -28,7 +29,8 @@ void report_unknown(const std::string& name, const Teuchos::ParameterList& valid
   const auto known = names_of(valid);
   const std::string guess = closest_name(name, known);
   std::string problem = "unknown parameter or sublist '" + name + "'";
-  if (!guess.empty()) problem += " (did you mean '" + guess + "'?)";
+  if (!guess.empty())
+    problem += " (did you mean '" + guess + "'?)";
   throw_input_error(source, join_path(path, name), problem, quoted_list(known, 40));
 }
 
@@ -47,7 +49,8 @@ void normalize_number_types(Teuchos::ParameterList& given, const std::string& na
 bool has_required_entries(const Teuchos::ParameterList& valid) {
   for (auto it = valid.begin(); it != valid.end(); ++it) {
     const ParameterRule* rule = rule_of(valid.entry(it));
-    if (rule != nullptr && rule->required()) return true;
+    if (rule != nullptr && rule->required())
+      return true;
   }
   return false;
 }
@@ -68,7 +71,8 @@ void validate_and_complete(Teuchos::ParameterList& given, const Teuchos::Paramet
                             join_path(path, name));
       continue;
     }
-    if (valid_entry == nullptr) report_unknown(name, valid, source, path);
+    if (valid_entry == nullptr)
+      report_unknown(name, valid, source, path);
     const ParameterRule* rule = rule_of(*valid_entry);
     if (rule == nullptr) {
       throw std::logic_error("railfe: parameter '" + join_path(path, name) + "' has no rule");
@@ -80,9 +84,9 @@ void validate_and_complete(Teuchos::ParameterList& given, const Teuchos::Paramet
     normalize_number_types(given, name, *rule);
 
     if (rule->kind() == ParameterKind::sublist && !rule->delegated()) {
-      validate_and_complete(given.sublist(name), Teuchos::getValue<Teuchos::ParameterList>(
-                                                     *valid_entry),
-                            source, join_path(path, name));
+      validate_and_complete(given.sublist(name),
+                            Teuchos::getValue<Teuchos::ParameterList>(*valid_entry), source,
+                            join_path(path, name));
     } else if (rule->kind() == ParameterKind::named_sublists) {
       const auto& layout =
           Teuchos::getValue<Teuchos::ParameterList>(*valid_entry).sublist(kAnyName);
@@ -100,17 +104,18 @@ void validate_and_complete(Teuchos::ParameterList& given, const Teuchos::Paramet
 
   for (auto it = valid.begin(); it != valid.end(); ++it) {
     const std::string& name = valid.name(it);
-    if (name == kAnyName || given.isParameter(name)) continue;
+    if (name == kAnyName || given.isParameter(name))
+      continue;
     const ParameterRule* rule = rule_of(valid.entry(it));
-    if (rule == nullptr) continue;
+    if (rule == nullptr)
+      continue;
     if (rule->required()) {
-      const std::string what = rule->kind() == ParameterKind::sublist ||
-                                       rule->kind() == ParameterKind::named_sublists
-                                   ? "missing required sublist"
-                                   : "missing required parameter";
+      const std::string what =
+          rule->kind() == ParameterKind::sublist || rule->kind() == ParameterKind::named_sublists
+              ? "missing required sublist"
+              : "missing required parameter";
       throw_input_error(source, join_path(path, name),
-                        what + " (" + valid.entry(it).docString() + ")",
-                        rule->describe_allowed());
+                        what + " (" + valid.entry(it).docString() + ")", rule->describe_allowed());
     }
     if (rule->kind() == ParameterKind::sublist) {
       // An absent optional sublist gets its defaults unless it has required entries of its own:

@@ -58,10 +58,14 @@ Mesh generate_box(const BoxSpec& spec) {
   for (GlobalIndex k = 0; k < nz; ++k) {
     for (GlobalIndex j = 0; j < ny; ++j) {
       for (GlobalIndex i = 0; i < nx; ++i) {
-        const GlobalIndex nodes[8] = {node_index(i, j, k),         node_index(i + 1, j, k),
-                                      node_index(i + 1, j + 1, k), node_index(i, j + 1, k),
-                                      node_index(i, j, k + 1),     node_index(i + 1, j, k + 1),
-                                      node_index(i + 1, j + 1, k + 1), node_index(i, j + 1, k + 1)};
+        const GlobalIndex nodes[8] = {node_index(i, j, k),
+                                      node_index(i + 1, j, k),
+                                      node_index(i + 1, j + 1, k),
+                                      node_index(i, j + 1, k),
+                                      node_index(i, j, k + 1),
+                                      node_index(i + 1, j, k + 1),
+                                      node_index(i + 1, j + 1, k + 1),
+                                      node_index(i, j + 1, k + 1)};
         block.add_element(nodes, 8);
       }
     }
@@ -76,7 +80,7 @@ Mesh generate_box(const BoxSpec& spec) {
     bool high;
     int face;
   };
-  const Face faces[6] = {{"xmin", 0, false, 3}, {"xmax", 0, true, 1}, {"ymin", 1, false, 0},
+  const Face faces[6] = {{"xmin", 0, false, 3}, {"xmax", 0, true, 1},  {"ymin", 1, false, 0},
                          {"ymax", 1, true, 2},  {"zmin", 2, false, 4}, {"zmax", 2, true, 5}};
   const std::array<GlobalIndex, 3> node_counts{px, py, pz};
   const std::array<int, 3> element_counts{nx, ny, nz};
@@ -103,8 +107,8 @@ Mesh generate_box(const BoxSpec& spec) {
         ijk[a] = fixed_element;
         ijk[b] = u;
         ijk[c] = v;
-        sides.sides.push_back({ijk[0] + nx * (ijk[1] + static_cast<GlobalIndex>(ny) * ijk[2]),
-                               face.face});
+        sides.sides.push_back(
+            {ijk[0] + nx * (ijk[1] + static_cast<GlobalIndex>(ny) * ijk[2]), face.face});
       }
     }
     std::sort(nodes.nodes.begin(), nodes.nodes.end());

@@ -12,21 +12,26 @@ namespace railfe {
 std::vector<Side> exterior_faces(const Mesh& mesh) {
   std::map<std::array<GlobalIndex, 4>, std::pair<Side, int>> faces;
   for (const auto& block : mesh.blocks) {
-    if (block.type != ElementType::hex8) continue;
+    if (block.type != ElementType::hex8)
+      continue;
     for (GlobalIndex e = 0; e < block.n_elements(); ++e) {
       const GlobalIndex* nodes = block.element_nodes(e);
       for (int face = 0; face < 6; ++face) {
         std::array<GlobalIndex, 4> key;
-        for (int k = 0; k < 4; ++k) key[k] = nodes[kHex8FaceNodes[face][k]];
+        for (int k = 0; k < 4; ++k)
+          key[k] = nodes[kHex8FaceNodes[face][k]];
         std::sort(key.begin(), key.end());
-        auto [it, inserted] = faces.emplace(key, std::make_pair(Side{block.first_element + e, face}, 1));
-        if (!inserted) ++it->second.second;
+        auto [it, inserted] =
+            faces.emplace(key, std::make_pair(Side{block.first_element + e, face}, 1));
+        if (!inserted)
+          ++it->second.second;
       }
     }
   }
   std::vector<Side> result;
   for (const auto& [key, side_count] : faces) {
-    if (side_count.second == 1) result.push_back(side_count.first);
+    if (side_count.second == 1)
+      result.push_back(side_count.first);
   }
   std::sort(result.begin(), result.end(), [](const Side& a, const Side& b) {
     return a.element != b.element ? a.element < b.element : a.face < b.face;
@@ -53,7 +58,8 @@ double box_tolerance(const Mesh& mesh) {
 bool inside(const Mesh& mesh, GlobalIndex node, const std::array<double, 6>& box, double slack) {
   for (int d = 0; d < 3; ++d) {
     const double x = mesh.coordinates[3 * node + d];
-    if (x < box[2 * d] - slack || x > box[2 * d + 1] + slack) return false;
+    if (x < box[2 * d] - slack || x > box[2 * d + 1] + slack)
+      return false;
   }
   return true;
 }
@@ -62,7 +68,8 @@ NodeSet select_nodes(const Mesh& mesh, const DerivedSetSpec& spec, const std::st
   std::vector<GlobalIndex> candidates;
   if (spec.within.empty()) {
     candidates.resize(mesh.n_nodes());
-    for (GlobalIndex n = 0; n < mesh.n_nodes(); ++n) candidates[n] = n;
+    for (GlobalIndex n = 0; n < mesh.n_nodes(); ++n)
+      candidates[n] = n;
   } else {
     candidates = mesh.node_set(spec.within, deck, spec.path + "/Within").nodes;
   }
@@ -70,7 +77,8 @@ NodeSet select_nodes(const Mesh& mesh, const DerivedSetSpec& spec, const std::st
   if (spec.box) {
     const double slack = box_tolerance(mesh);
     for (GlobalIndex node : candidates) {
-      if (inside(mesh, node, *spec.box, slack)) set.nodes.push_back(node);
+      if (inside(mesh, node, *spec.box, slack))
+        set.nodes.push_back(node);
     }
   } else {
     double best = 1e300;
@@ -85,7 +93,8 @@ NodeSet select_nodes(const Mesh& mesh, const DerivedSetSpec& spec, const std::st
         nearest = node;
       }
     }
-    if (nearest >= 0) set.nodes.push_back(nearest);
+    if (nearest >= 0)
+      set.nodes.push_back(nearest);
   }
   return set;
 }
@@ -103,7 +112,8 @@ SideSet select_sides(const Mesh& mesh, const DerivedSetSpec& spec, const std::st
     for (int k = 0; k < 4 && all_inside; ++k) {
       all_inside = inside(mesh, nodes[kHex8FaceNodes[side.face][k]], *spec.box, slack);
     }
-    if (all_inside) set.sides.push_back(side);
+    if (all_inside)
+      set.sides.push_back(side);
   }
   return set;
 }
@@ -122,8 +132,9 @@ void add_derived_sets(Mesh& mesh, const std::vector<DerivedSetSpec>& specs,
     }
     if (spec.side_set) {
       if (!spec.box) {
-        throw_input_error(deck, spec.path, "a side set needs 'Box'", "Box = {xmin, xmax, ymin, "
-                                                                     "ymax, zmin, zmax}");
+        throw_input_error(deck, spec.path, "a side set needs 'Box'",
+                          "Box = {xmin, xmax, ymin, "
+                          "ymax, zmin, zmax}");
       }
       SideSet set = select_sides(mesh, spec, deck);
       if (set.sides.empty()) {

@@ -14,8 +14,8 @@ namespace railfe {
 
 /// One set to add. Exactly one of box and point is given.
 struct DerivedSetSpec {
-  std::string name;          ///< name of the new set
-  bool side_set = false;     ///< true: a side set; false: a node set
+  std::string name;       ///< name of the new set
+  bool side_set = false;  ///< true: a side set; false: a node set
   /// Existing set to select from ("" = all nodes, or all exterior faces for a side set).
   std::string within;
   /// Selects entities whose nodes all lie in [xmin, xmax] × [ymin, ymax] × [zmin, zmax].

@@ -15,21 +15,24 @@ ElementType element_type_from_exodus(std::string name, int nodes, const std::str
                                      const std::string& block) {
   std::transform(name.begin(), name.end(), name.begin(),
                  [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-  if (name.rfind("HEX", 0) == 0 && nodes == 8) return ElementType::hex8;
+  if (name.rfind("HEX", 0) == 0 && nodes == 8)
+    return ElementType::hex8;
   if ((name.rfind("BAR", 0) == 0 || name.rfind("BEAM", 0) == 0 || name.rfind("TRUSS", 0) == 0) &&
       nodes == 2) {
     return ElementType::beam2;
   }
-  if (name.rfind("SPHERE", 0) == 0 && nodes == 1) return ElementType::point_mass;
-  throw_input_error(path, "block " + block,
-                    "element type " + name + " with " + std::to_string(nodes) +
-                        " nodes is not supported",
-                    "HEX8, BAR2/BEAM2, SPHERE");
+  if (name.rfind("SPHERE", 0) == 0 && nodes == 1)
+    return ElementType::point_mass;
+  throw_input_error(
+      path, "block " + block,
+      "element type " + name + " with " + std::to_string(nodes) + " nodes is not supported",
+      "HEX8, BAR2/BEAM2, SPHERE");
 }
 
 std::vector<int64_t> entity_ids(const ExodusFile& file, ex_entity_type type, int64_t count) {
   std::vector<int64_t> ids(count);
-  if (count > 0) file.check(ex_get_ids(file.id(), type, ids.data()), "reading entity ids");
+  if (count > 0)
+    file.check(ex_get_ids(file.id(), type, ids.data()), "reading entity ids");
   return ids;
 }
 
@@ -66,8 +69,8 @@ Mesh read_exodus_mesh(const std::string& path) {
     ElementBlock block;
     block.id = static_cast<int>(block_ids[b]);
     block.name = block_names[b].empty() ? "block_" + std::to_string(block.id) : block_names[b];
-    block.type = element_type_from_exodus(type_name, static_cast<int>(n_per_entry), path,
-                                          block.name);
+    block.type =
+        element_type_from_exodus(type_name, static_cast<int>(n_per_entry), path, block.name);
     std::vector<int64_t> connectivity(n_entries * n_per_entry);
     if (n_entries > 0) {
       file.check(ex_get_conn(file.id(), EX_ELEM_BLOCK, block_ids[b], connectivity.data(), nullptr,
@@ -75,9 +78,11 @@ Mesh read_exodus_mesh(const std::string& path) {
                  "reading connectivity of block " + block.name);
     }
     block.connectivity.assign(connectivity.begin(), connectivity.end());
-    for (auto& node : block.connectivity) node -= 1;  // Exodus numbers from 1
+    for (auto& node : block.connectivity)
+      node -= 1;  // Exodus numbers from 1
     block.offsets.resize(n_entries + 1);
-    for (int64_t e = 0; e <= n_entries; ++e) block.offsets[e] = e * n_per_entry;
+    for (int64_t e = 0; e <= n_entries; ++e)
+      block.offsets[e] = e * n_per_entry;
     mesh.blocks.push_back(std::move(block));
   }
   mesh.number_blocks();
@@ -95,9 +100,9 @@ Mesh read_exodus_mesh(const std::string& path) {
     }
     NodeSet set;
     set.id = static_cast<int>(node_set_ids[s]);
-    set.name = node_set_names[s].empty() ? "nodelist_" + std::to_string(set.id)
-                                         : node_set_names[s];
-    for (int64_t node : nodes) set.nodes.push_back(node - 1);
+    set.name = node_set_names[s].empty() ? "nodelist_" + std::to_string(set.id) : node_set_names[s];
+    for (int64_t node : nodes)
+      set.nodes.push_back(node - 1);
     std::sort(set.nodes.begin(), set.nodes.end());
     set.nodes.erase(std::unique(set.nodes.begin(), set.nodes.end()), set.nodes.end());
     mesh.node_sets.push_back(std::move(set));
@@ -111,14 +116,12 @@ Mesh read_exodus_mesh(const std::string& path) {
                "reading side set parameters");
     std::vector<int64_t> elements(count), faces(count);
     if (count > 0) {
-      file.check(ex_get_set(file.id(), EX_SIDE_SET, side_set_ids[s], elements.data(),
-                            faces.data()),
+      file.check(ex_get_set(file.id(), EX_SIDE_SET, side_set_ids[s], elements.data(), faces.data()),
                  "reading side set");
     }
     SideSet set;
     set.id = static_cast<int>(side_set_ids[s]);
-    set.name = side_set_names[s].empty() ? "surface_" + std::to_string(set.id)
-                                         : side_set_names[s];
+    set.name = side_set_names[s].empty() ? "surface_" + std::to_string(set.id) : side_set_names[s];
     for (int64_t i = 0; i < count; ++i) {
       set.sides.push_back({elements[i] - 1, static_cast<int>(faces[i]) - 1});
     }

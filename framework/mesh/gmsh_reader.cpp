@@ -19,7 +19,8 @@ namespace {
 // Reads whitespace-separated tokens and remembers the line, so every error can point at it.
 class TokenReader {
  public:
-  TokenReader(std::string text, std::string path) : text_(std::move(text)), path_(std::move(path)) {}
+  TokenReader(std::string text, std::string path)
+      : text_(std::move(text)), path_(std::move(path)) {}
 
   bool at_end() {
     skip_space();
@@ -28,15 +29,18 @@ class TokenReader {
 
   std::string word() {
     skip_space();
-    if (position_ >= text_.size()) fail("unexpected end of file");
+    if (position_ >= text_.size())
+      fail("unexpected end of file");
     const std::size_t start = position_;
     if (text_[position_] == '"') {
       const std::size_t close = text_.find('"', position_ + 1);
-      if (close == std::string::npos) fail("unterminated quoted name");
+      if (close == std::string::npos)
+        fail("unterminated quoted name");
       position_ = close + 1;
       return text_.substr(start + 1, close - start - 1);
     }
-    while (position_ < text_.size() && !std::isspace(static_cast<unsigned char>(text_[position_]))) {
+    while (position_ < text_.size() &&
+           !std::isspace(static_cast<unsigned char>(text_[position_]))) {
       ++position_;
     }
     return text_.substr(start, position_ - start);
@@ -47,7 +51,8 @@ class TokenReader {
     char* end = nullptr;
     errno = 0;
     const long long value = std::strtoll(token.c_str(), &end, 10);
-    if (errno != 0 || *end != '\0') fail("expected an integer, found '" + token + "'");
+    if (errno != 0 || *end != '\0')
+      fail("expected an integer, found '" + token + "'");
     return value;
   }
 
@@ -55,13 +60,15 @@ class TokenReader {
     const std::string token = word();
     char* end = nullptr;
     const double value = std::strtod(token.c_str(), &end);
-    if (*end != '\0') fail("expected a number, found '" + token + "'");
+    if (*end != '\0')
+      fail("expected a number, found '" + token + "'");
     return value;
   }
 
   void expect(const std::string& token) {
     const std::string found = word();
-    if (found != token) fail("expected '" + token + "', found '" + found + "'");
+    if (found != token)
+      fail("expected '" + token + "', found '" + found + "'");
   }
 
   void skip_section(const std::string& name) {
@@ -78,7 +85,8 @@ class TokenReader {
  private:
   void skip_space() {
     while (position_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[position_]))) {
-      if (text_[position_] == '\n') ++line_;
+      if (text_[position_] == '\n')
+        ++line_;
       ++position_;
     }
   }
@@ -92,46 +100,61 @@ class TokenReader {
 // Nodes per element of the Gmsh element types railfe reads or must skip over.
 int gmsh_nodes_per_element(int type) {
   switch (type) {
-    case 1: return 2;   // line
-    case 2: return 3;   // triangle
-    case 3: return 4;   // quadrangle
-    case 4: return 4;   // tetrahedron
-    case 5: return 8;   // hexahedron
-    case 6: return 6;   // prism
-    case 7: return 5;   // pyramid
-    case 15: return 1;  // point
-    default: return -1;
+    case 1:
+      return 2;  // line
+    case 2:
+      return 3;  // triangle
+    case 3:
+      return 4;  // quadrangle
+    case 4:
+      return 4;  // tetrahedron
+    case 5:
+      return 8;  // hexahedron
+    case 6:
+      return 6;  // prism
+    case 7:
+      return 5;  // pyramid
+    case 15:
+      return 1;  // point
+    default:
+      return -1;
   }
 }
 
 const char* gmsh_type_name(int type) {
   switch (type) {
-    case 2: return "triangle";
-    case 4: return "tetrahedron";
-    case 6: return "prism";
-    case 7: return "pyramid";
-    default: return "higher-order or unknown element";
+    case 2:
+      return "triangle";
+    case 4:
+      return "tetrahedron";
+    case 6:
+      return "prism";
+    case 7:
+      return "pyramid";
+    default:
+      return "higher-order or unknown element";
   }
 }
 
 using EntityKey = std::pair<int, int>;  // (dimension, entity tag)
 
 struct GmshContent {
-  std::map<EntityKey, std::string> physical_names;          // (dim, physical tag) -> name
-  std::map<EntityKey, std::vector<int>> entity_physicals;   // (dim, entity) -> physical tags
+  std::map<EntityKey, std::string> physical_names;         // (dim, physical tag) -> name
+  std::map<EntityKey, std::vector<int>> entity_physicals;  // (dim, entity) -> physical tags
   std::vector<double> coordinates;
-  std::unordered_map<long long, GlobalIndex> node_index;    // Gmsh node tag -> railfe index
+  std::unordered_map<long long, GlobalIndex> node_index;  // Gmsh node tag -> railfe index
   // Hexahedra per block name, and the block id to write.
   std::map<std::string, std::vector<std::array<GlobalIndex, 8>>> hexes;
   std::map<std::string, int> block_ids;
   std::map<std::string, std::vector<std::array<GlobalIndex, 4>>> quads;  // per physical surface
-  std::map<std::string, std::set<GlobalIndex>> set_nodes;               // per physical group
+  std::map<std::string, std::set<GlobalIndex>> set_nodes;                // per physical group
   std::map<std::string, int> set_ids;
 };
 
 std::string physical_name(const GmshContent& content, int dim, int tag) {
   auto it = content.physical_names.find({dim, tag});
-  if (it != content.physical_names.end()) return it->second;
+  if (it != content.physical_names.end())
+    return it->second;
   static const char* kPrefix[4] = {"point_", "curve_", "surface_", "volume_"};
   return kPrefix[dim] + std::to_string(tag);
 }
@@ -148,12 +171,14 @@ void read_physical_names(TokenReader& in, GmshContent& content) {
 
 void read_entities(TokenReader& in, GmshContent& content) {
   long long counts[4];
-  for (auto& count : counts) count = in.integer();
+  for (auto& count : counts)
+    count = in.integer();
   for (int dim = 0; dim < 4; ++dim) {
     for (long long i = 0; i < counts[dim]; ++i) {
       const int tag = static_cast<int>(in.integer());
       const int n_coordinates = dim == 0 ? 3 : 6;
-      for (int c = 0; c < n_coordinates; ++c) in.real();
+      for (int c = 0; c < n_coordinates; ++c)
+        in.real();
       const long long n_physicals = in.integer();
       auto& physicals = content.entity_physicals[{dim, tag}];
       for (long long p = 0; p < n_physicals; ++p) {
@@ -161,7 +186,8 @@ void read_entities(TokenReader& in, GmshContent& content) {
       }
       if (dim > 0) {
         const long long n_bounding = in.integer();
-        for (long long b = 0; b < n_bounding; ++b) in.integer();
+        for (long long b = 0; b < n_bounding; ++b)
+          in.integer();
       }
     }
   }
@@ -181,14 +207,17 @@ void read_nodes(TokenReader& in, GmshContent& content) {
     const long long parametric = in.integer();
     const long long count = in.integer();
     std::vector<long long> tags(count);
-    for (auto& tag : tags) tag = in.integer();
+    for (auto& tag : tags)
+      tag = in.integer();
     for (long long i = 0; i < count; ++i) {
       const GlobalIndex index = static_cast<GlobalIndex>(content.coordinates.size() / 3);
       if (!content.node_index.emplace(tags[i], index).second) {
         in.fail("node tag " + std::to_string(tags[i]) + " appears twice");
       }
-      for (int d = 0; d < 3; ++d) content.coordinates.push_back(in.real());
-      if (parametric != 0) in.fail("parametric node coordinates are not supported");
+      for (int d = 0; d < 3; ++d)
+        content.coordinates.push_back(in.real());
+      if (parametric != 0)
+        in.fail("parametric node coordinates are not supported");
     }
   }
   in.expect("$EndNodes");
@@ -215,8 +244,8 @@ void read_elements(TokenReader& in, GmshContent& content) {
     const int n_nodes = gmsh_nodes_per_element(type);
     const auto& physicals = content.entity_physicals[{dim, entity}];
     if (n_nodes < 0 || (dim == 3 && type != 5)) {
-      in.fail(std::string(gmsh_type_name(type)) + " elements (Gmsh type " +
-              std::to_string(type) + ") in volume " + std::to_string(entity) +
+      in.fail(std::string(gmsh_type_name(type)) + " elements (Gmsh type " + std::to_string(type) +
+              ") in volume " + std::to_string(entity) +
               " are not supported; railfe solids are 8-node hexahedra (use transfinite "
               "meshing with Recombine)");
     }
@@ -230,14 +259,15 @@ void read_elements(TokenReader& in, GmshContent& content) {
     std::string block_name;
     if (dim == 3) {
       const int tag = physicals.empty() ? entity : physicals[0];
-      block_name = physicals.empty() ? "volume_" + std::to_string(entity)
-                                     : physical_name(content, 3, tag);
+      block_name =
+          physicals.empty() ? "volume_" + std::to_string(entity) : physical_name(content, 3, tag);
       content.block_ids.emplace(block_name, tag);
     }
     for (long long e = 0; e < count; ++e) {
       in.integer();  // element tag
       std::array<GlobalIndex, 8> nodes{};
-      for (int a = 0; a < n_nodes; ++a) nodes[a] = node_of(in, content, in.integer());
+      for (int a = 0; a < n_nodes; ++a)
+        nodes[a] = node_of(in, content, in.integer());
       if (dim == 3) {
         content.hexes[block_name].push_back(nodes);
         continue;
@@ -246,7 +276,8 @@ void read_elements(TokenReader& in, GmshContent& content) {
         const std::string name = physical_name(content, dim, physical);
         content.set_ids.emplace(name, physical);
         content.set_nodes[name].insert(nodes.begin(), nodes.begin() + n_nodes);
-        if (dim == 2) content.quads[name].push_back({nodes[0], nodes[1], nodes[2], nodes[3]});
+        if (dim == 2)
+          content.quads[name].push_back({nodes[0], nodes[1], nodes[2], nodes[3]});
       }
     }
   }
@@ -256,7 +287,8 @@ void read_elements(TokenReader& in, GmshContent& content) {
 struct FaceKeyHash {
   std::size_t operator()(const std::array<GlobalIndex, 4>& key) const {
     std::size_t hash = 0;
-    for (GlobalIndex node : key) hash = hash * 1000003u ^ static_cast<std::size_t>(node);
+    for (GlobalIndex node : key)
+      hash = hash * 1000003u ^ static_cast<std::size_t>(node);
     return hash;
   }
 };
@@ -270,16 +302,19 @@ void build_side_sets(const GmshContent& content, Mesh& mesh) {
       wanted.emplace(quad, Side{-1, -1});
     }
   }
-  if (wanted.empty()) return;
+  if (wanted.empty())
+    return;
   for (const auto& block : mesh.blocks) {
     for (GlobalIndex e = 0; e < block.n_elements(); ++e) {
       const GlobalIndex* nodes = block.element_nodes(e);
       for (int face = 0; face < 6; ++face) {
         Key key;
-        for (int k = 0; k < 4; ++k) key[k] = nodes[kHex8FaceNodes[face][k]];
+        for (int k = 0; k < 4; ++k)
+          key[k] = nodes[kHex8FaceNodes[face][k]];
         std::sort(key.begin(), key.end());
         auto it = wanted.find(key);
-        if (it != wanted.end()) it->second = {block.first_element + e, face};
+        if (it != wanted.end())
+          it->second = {block.first_element + e, face};
       }
     }
   }
@@ -303,7 +338,8 @@ void build_side_sets(const GmshContent& content, Mesh& mesh) {
 
 Mesh read_gmsh_mesh(const std::string& path) {
   std::ifstream file(path, std::ios::binary);
-  if (!file) throw_input_error(path, "", "mesh file not found or not readable");
+  if (!file)
+    throw_input_error(path, "", "mesh file not found or not readable");
   std::ostringstream buffer;
   buffer << file.rdbuf();
   TokenReader in(buffer.str(), path);
@@ -316,8 +352,10 @@ Mesh read_gmsh_mesh(const std::string& path) {
       const std::string version = in.word();
       const long long binary = in.integer();
       in.integer();  // size of double
-      if (version != "4.1") in.fail("mesh format version " + version + " is not supported");
-      if (binary != 0) in.fail("binary .msh files are not supported");
+      if (version != "4.1")
+        in.fail("mesh format version " + version + " is not supported");
+      if (binary != 0)
+        in.fail("binary .msh files are not supported");
       in.expect("$EndMeshFormat");
       saw_format = true;
     } else if (!saw_format) {
@@ -336,7 +374,8 @@ Mesh read_gmsh_mesh(const std::string& path) {
       in.fail("unexpected '" + section + "' outside a section");
     }
   }
-  if (!saw_format) in.fail("empty file");
+  if (!saw_format)
+    in.fail("empty file");
 
   Mesh mesh;
   mesh.source = path;
@@ -346,7 +385,8 @@ Mesh read_gmsh_mesh(const std::string& path) {
     block.name = name;
     block.id = content.block_ids.at(name);
     block.type = ElementType::hex8;
-    for (const auto& hex : hexes) block.add_element(hex.data(), 8);
+    for (const auto& hex : hexes)
+      block.add_element(hex.data(), 8);
     mesh.blocks.push_back(std::move(block));
   }
   mesh.number_blocks();

@@ -6,9 +6,9 @@ namespace railfe {
 
 /// Shape function values and reference derivatives at the eight Gauss points (weights all 1).
 struct Hex8GaussTable {
-  double N[8][8];        ///< N[q][a]: shape function a at point q
-  double dN[8][3][8];    ///< dN[q][k][a]: ∂N_a/∂ξ_k at point q (node index last, for SIMD)
-  double centre[3][8];   ///< ∂N_a/∂ξ_k at ξ = 0
+  double N[8][8];       ///< N[q][a]: shape function a at point q
+  double dN[8][3][8];   ///< dN[q][k][a]: ∂N_a/∂ξ_k at point q (node index last, for SIMD)
+  double centre[3][8];  ///< ∂N_a/∂ξ_k at ξ = 0
   double dN_by_point[3][8][8];  ///< dN_by_point[k][a][q] = dN[q][k][a], for SIMD over points
 };
 

@@ -8,22 +8,32 @@ namespace railfe {
 
 int nodes_per_element(ElementType type) {
   switch (type) {
-    case ElementType::hex8: return 8;
-    case ElementType::beam2: return 2;
-    case ElementType::spring2: return 2;
-    case ElementType::point_mass: return 1;
-    case ElementType::rigid_link: return 0;
+    case ElementType::hex8:
+      return 8;
+    case ElementType::beam2:
+      return 2;
+    case ElementType::spring2:
+      return 2;
+    case ElementType::point_mass:
+      return 1;
+    case ElementType::rigid_link:
+      return 0;
   }
   return 0;
 }
 
 std::string element_type_name(ElementType type) {
   switch (type) {
-    case ElementType::hex8: return "HEX8";
-    case ElementType::beam2: return "BEAM2";
-    case ElementType::spring2: return "SPRING2";
-    case ElementType::point_mass: return "SPHERE";
-    case ElementType::rigid_link: return "RIGIDLINK";
+    case ElementType::hex8:
+      return "HEX8";
+    case ElementType::beam2:
+      return "BEAM2";
+    case ElementType::spring2:
+      return "SPRING2";
+    case ElementType::point_mass:
+      return "SPHERE";
+    case ElementType::rigid_link:
+      return "RIGIDLINK";
   }
   return "?";
 }
@@ -35,13 +45,15 @@ void ElementBlock::add_element(const GlobalIndex* nodes, int count) {
 
 GlobalIndex Mesh::n_elements() const {
   GlobalIndex total = 0;
-  for (const auto& block : blocks) total += block.n_elements();
+  for (const auto& block : blocks)
+    total += block.n_elements();
   return total;
 }
 
 int Mesh::block_of(GlobalIndex element) const {
   for (std::size_t b = 0; b < blocks.size(); ++b) {
-    if (element < blocks[b].first_element + blocks[b].n_elements()) return static_cast<int>(b);
+    if (element < blocks[b].first_element + blocks[b].n_elements())
+      return static_cast<int>(b);
   }
   return -1;
 }
@@ -59,7 +71,8 @@ namespace {
 template <typename Set>
 std::vector<std::string> set_names(const std::vector<Set>& sets) {
   std::vector<std::string> names;
-  for (const auto& set : sets) names.push_back(set.name);
+  for (const auto& set : sets)
+    names.push_back(set.name);
   return names;
 }
 
@@ -67,12 +80,14 @@ template <typename Set>
 const Set& find_set(const std::vector<Set>& sets, const std::string& name, const char* kind,
                     const std::string& deck, const std::string& path, const std::string& mesh) {
   for (const auto& set : sets) {
-    if (set.name == name) return set;
+    if (set.name == name)
+      return set;
   }
   const auto names = set_names(sets);
   std::string problem = std::string("unknown ") + kind + " '" + name + "' in mesh '" + mesh + "'";
   const std::string guess = closest_name(name, names);
-  if (!guess.empty()) problem += " (did you mean '" + guess + "'?)";
+  if (!guess.empty())
+    problem += " (did you mean '" + guess + "'?)";
   throw_input_error(deck, path, problem, quoted_list(names, 40));
 }
 
@@ -104,6 +119,8 @@ bool Mesh::has_side_set(const std::string& name) const {
                      [&](const SideSet& set) { return set.name == name; });
 }
 
-std::vector<std::string> Mesh::block_names() const { return set_names(blocks); }
+std::vector<std::string> Mesh::block_names() const {
+  return set_names(blocks);
+}
 
 }  // namespace railfe

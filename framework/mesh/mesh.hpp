@@ -28,11 +28,12 @@ std::string element_type_name(ElementType type);
 
 /// Elements of one type and one material region.
 struct ElementBlock {
-  std::string name;          ///< name used in decks
-  int id = 0;                ///< Exodus block id
+  std::string name;  ///< name used in decks
+  int id = 0;        ///< Exodus block id
   ElementType type = ElementType::hex8;
   GlobalIndex first_element = 0;  ///< global index of this block's element 0
-  std::vector<GlobalIndex> offsets{0};  ///< element e's nodes are connectivity[offsets[e]..offsets[e+1])
+  std::vector<GlobalIndex> offsets{
+      0};  ///< element e's nodes are connectivity[offsets[e]..offsets[e+1])
   std::vector<GlobalIndex> connectivity;  ///< global node indices
 
   /// Number of elements in the block.
@@ -47,8 +48,8 @@ struct ElementBlock {
 
 /// A named set of nodes (sorted, unique).
 struct NodeSet {
-  std::string name;  ///< name used in decks
-  int id = 0;        ///< Exodus set id
+  std::string name;                ///< name used in decks
+  int id = 0;                      ///< Exodus set id
   std::vector<GlobalIndex> nodes;  ///< global node indices
 };
 
@@ -61,19 +62,19 @@ struct Side {
 
 /// A named set of element faces.
 struct SideSet {
-  std::string name;  ///< name used in decks
-  int id = 0;        ///< Exodus set id
+  std::string name;         ///< name used in decks
+  int id = 0;               ///< Exodus set id
   std::vector<Side> sides;  ///< the faces
 };
 
 /// Nodes, blocks and sets of a whole model.
 class Mesh {
  public:
-  std::string source;                 ///< where it came from, for messages
-  std::vector<double> coordinates;    ///< x, y, z of node i at 3i .. 3i+2 (m)
-  std::vector<ElementBlock> blocks;   ///< element blocks in global element order
-  std::vector<NodeSet> node_sets;     ///< node sets
-  std::vector<SideSet> side_sets;     ///< side sets
+  std::string source;                ///< where it came from, for messages
+  std::vector<double> coordinates;   ///< x, y, z of node i at 3i .. 3i+2 (m)
+  std::vector<ElementBlock> blocks;  ///< element blocks in global element order
+  std::vector<NodeSet> node_sets;    ///< node sets
+  std::vector<SideSet> side_sets;    ///< side sets
 
   /// Number of nodes.
   GlobalIndex n_nodes() const { return static_cast<GlobalIndex>(coordinates.size() / 3); }

@@ -16,15 +16,18 @@ double hex8_jacobian_quality(const double x[8][3]) {
   double longest = 0;
   for (const auto& edge : kEdges) {
     double length = 0;
-    for (int d = 0; d < 3; ++d) length += std::pow(x[edge[1]][d] - x[edge[0]][d], 2);
+    for (int d = 0; d < 3; ++d)
+      length += std::pow(x[edge[1]][d] - x[edge[0]][d], 2);
     longest = std::max(longest, length);
   }
-  if (longest == 0) return 0;
+  if (longest == 0)
+    return 0;
   const double half_edge = std::sqrt(longest) / 2;
   const Hex8GaussTable& table = hex8_gauss_table();
   double gradient[3][8];
   double smallest = 1e300;
-  for (int q = 0; q < 8; ++q) smallest = std::min(smallest, hex8_gradients(x, table.dN[q], gradient));
+  for (int q = 0; q < 8; ++q)
+    smallest = std::min(smallest, hex8_gradients(x, table.dN[q], gradient));
   return smallest / (half_edge * half_edge * half_edge);
 }
 
@@ -33,8 +36,9 @@ namespace {
 void check_nodes(const Mesh& mesh) {
   for (GlobalIndex i = 0; i < static_cast<GlobalIndex>(mesh.coordinates.size()); ++i) {
     if (!std::isfinite(mesh.coordinates[i])) {
-      throw_input_error(mesh.source, "", "node " + std::to_string(i / 3 + 1) +
-                                             " has a coordinate that is not a finite number");
+      throw_input_error(
+          mesh.source, "",
+          "node " + std::to_string(i / 3 + 1) + " has a coordinate that is not a finite number");
     }
   }
 }
@@ -49,8 +53,7 @@ void check_connectivity(const Mesh& mesh) {
         throw_input_error(mesh.source, "block " + block.name,
                           "element " + std::to_string(block.first_element + e + 1) + " has " +
                               std::to_string(count) + " nodes",
-                          std::to_string(expected) + " nodes for " +
-                              element_type_name(block.type));
+                          std::to_string(expected) + " nodes for " + element_type_name(block.type));
       }
       const GlobalIndex* nodes = block.element_nodes(e);
       for (int a = 0; a < count; ++a) {
@@ -68,20 +71,24 @@ void check_connectivity(const Mesh& mesh) {
 
 void check_hex8_shapes(const Mesh& mesh) {
   for (const auto& block : mesh.blocks) {
-    if (block.type != ElementType::hex8) continue;
+    if (block.type != ElementType::hex8)
+      continue;
     for (GlobalIndex e = 0; e < block.n_elements(); ++e) {
       double x[8][3];
       const GlobalIndex* nodes = block.element_nodes(e);
       for (int a = 0; a < 8; ++a) {
-        for (int d = 0; d < 3; ++d) x[a][d] = mesh.coordinates[3 * nodes[a] + d];
+        for (int d = 0; d < 3; ++d)
+          x[a][d] = mesh.coordinates[3 * nodes[a] + d];
       }
       const double quality = hex8_jacobian_quality(x);
-      if (quality > 1e-8) continue;
+      if (quality > 1e-8)
+        continue;
       std::ostringstream problem;
       problem << "element " << block.first_element + e + 1 << " (hex8, nodes";
-      for (int a = 0; a < 8; ++a) problem << " " << nodes[a] + 1;
-      problem << ") is " << (quality < -1e-8 ? "inverted" : "degenerate")
-              << ": Jacobian quality " << quality << " at an integration point";
+      for (int a = 0; a < 8; ++a)
+        problem << " " << nodes[a] + 1;
+      problem << ") is " << (quality < -1e-8 ? "inverted" : "degenerate") << ": Jacobian quality "
+              << quality << " at an integration point";
       throw_input_error(mesh.source, "block " + block.name, problem.str(),
                         "positive Jacobians at the integration points (nodes 0-3 counter-"
                         "clockwise seen from nodes 4-7, no collapsed edges or faces)");
@@ -104,10 +111,10 @@ void check_sets(const Mesh& mesh) {
   for (const auto& set : mesh.side_sets) {
     for (const Side& side : set.sides) {
       if (side.element < 0 || side.element >= n_elements) {
-        throw_input_error(mesh.source, "side set " + set.name,
-                          "refers to element " + std::to_string(side.element + 1) +
-                              ", which does not exist",
-                          "element ids 1.." + std::to_string(n_elements));
+        throw_input_error(
+            mesh.source, "side set " + set.name,
+            "refers to element " + std::to_string(side.element + 1) + ", which does not exist",
+            "element ids 1.." + std::to_string(n_elements));
       }
       const auto& block = mesh.blocks[mesh.block_of(side.element)];
       if (block.type != ElementType::hex8 || side.face < 0 || side.face > 5) {

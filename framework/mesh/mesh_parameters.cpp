@@ -11,8 +11,9 @@
 namespace railfe {
 
 ParameterSpec mesh_parameters() {
-  ParameterSpec box("A structured hex8 box: node and side sets xmin, xmax, ymin, ymax, zmin, zmax "
-                    "cover its faces.");
+  ParameterSpec box(
+      "A structured hex8 box: node and side sets xmin, xmax, ymin, ymax, zmin, zmax "
+      "cover its faces.");
   box.real_array("Origin", {0, 0, 0}, "Corner with the smallest coordinates.", "m", 3);
   box.required_real_array("Lengths", "Edge lengths along x, y and z.", "m", 3, Range::positive());
   box.integer_array("Elements", {1, 1, 1}, "Elements along x, y and z.", 3, Range::at_least(1));
@@ -28,11 +29,11 @@ ParameterSpec mesh_parameters() {
   node_set.text("Within", "", "Select only among this node set's nodes ('' = all nodes).");
 
   ParameterSpec side_set("A side set selected from the mesh's element faces.");
-  side_set.required_real_array("Box", "Faces whose nodes all lie in {xmin, xmax, ymin, ymax, "
-                                      "zmin, zmax}.",
+  side_set.required_real_array("Box",
+                               "Faces whose nodes all lie in {xmin, xmax, ymin, ymax, "
+                               "zmin, zmax}.",
                                "m", 6);
-  side_set.text("Within", "",
-                "Select only among this side set's faces ('' = all exterior faces).");
+  side_set.text("Within", "", "Select only among this side set's faces ('' = all exterior faces).");
 
   ParameterSpec spec("The mesh: generated, or read from Exodus II or Gmsh.");
   spec.required_choice("Type",
@@ -60,7 +61,8 @@ namespace {
 template <std::size_t N>
 std::array<double, N> array_of(const Teuchos::Array<double>& values) {
   std::array<double, N> result{};
-  for (std::size_t i = 0; i < N; ++i) result[i] = values[i];
+  for (std::size_t i = 0; i < N; ++i)
+    result[i] = values[i];
   return result;
 }
 
@@ -79,10 +81,10 @@ Mesh generate_from_deck(const Teuchos::ParameterList& section, const Deck& deck)
   spec.block_name = box.get<std::string>("Block name");
   const double n_elements = 1.0 * elements[0] * elements[1] * elements[2];
   if (n_elements > 2e8) {
-    throw_input_error(deck.source, "Mesh/Box/Elements",
-                      "asks for " + std::to_string(static_cast<long long>(n_elements)) +
-                          " elements",
-                      "at most 2e8 elements");
+    throw_input_error(
+        deck.source, "Mesh/Box/Elements",
+        "asks for " + std::to_string(static_cast<long long>(n_elements)) + " elements",
+        "at most 2e8 elements");
   }
   return generate_box(spec);
 }
@@ -103,7 +105,8 @@ Mesh build_mesh(const Teuchos::ParameterList& section, const Deck& deck) {
     const std::string path = deck.resolve(file);
     mesh = type == "exodus" ? read_exodus_mesh(path) : read_gmsh_mesh(path);
     const double scale = section.get<double>("Length scale");
-    for (double& x : mesh.coordinates) x *= scale;
+    for (double& x : mesh.coordinates)
+      x *= scale;
   }
 
   std::vector<DerivedSetSpec> derived;
@@ -116,8 +119,10 @@ Mesh build_mesh(const Teuchos::ParameterList& section, const Deck& deck) {
     spec.within = entry.get<std::string>("Within");
     const auto& box = entry.get<Teuchos::Array<double>>("Box");
     const auto& point = entry.get<Teuchos::Array<double>>("Point");
-    if (!box.empty()) spec.box = array_of<6>(box);
-    if (!point.empty()) spec.point = array_of<3>(point);
+    if (!box.empty())
+      spec.box = array_of<6>(box);
+    if (!point.empty())
+      spec.point = array_of<3>(point);
     derived.push_back(spec);
   }
   const auto& side_sets = section.sublist("Side sets");
@@ -138,8 +143,10 @@ Mesh build_mesh(const Teuchos::ParameterList& section, const Deck& deck) {
 
 PartitionMethod partition_method(const Teuchos::ParameterList& section) {
   const auto name = section.get<std::string>("Partitioner");
-  if (name == "rcb") return PartitionMethod::rcb;
-  if (name == "block") return PartitionMethod::block;
+  if (name == "rcb")
+    return PartitionMethod::rcb;
+  if (name == "block")
+    return PartitionMethod::block;
   return PartitionMethod::multijagged;
 }
 

@@ -18,9 +18,11 @@ void centroid(const Mesh& mesh, const ElementBlock& block, GlobalIndex e, double
   const GlobalIndex* nodes = block.element_nodes(e);
   c[0] = c[1] = c[2] = 0;
   for (int a = 0; a < count; ++a) {
-    for (int d = 0; d < 3; ++d) c[d] += mesh.coordinates[3 * nodes[a] + d];
+    for (int d = 0; d < 3; ++d)
+      c[d] += mesh.coordinates[3 * nodes[a] + d];
   }
-  for (int d = 0; d < 3; ++d) c[d] /= count;
+  for (int d = 0; d < 3; ++d)
+    c[d] /= count;
 }
 
 }  // namespace
@@ -35,11 +37,12 @@ void MeshPartition::assign_elements(PartitionMethod method) {
   const GlobalIndex n_elements = mesh_->n_elements();
   const int n_ranks = comm_.n_ranks();
   element_ranks_.assign(n_elements, 0);
-  method_name_ = n_ranks == 1 ? "none (one rank)"
+  method_name_ = n_ranks == 1                       ? "none (one rank)"
                  : method == PartitionMethod::block ? "block"
                  : method == PartitionMethod::rcb   ? "Zoltan2 rcb"
                                                     : "Zoltan2 multijagged";
-  if (n_ranks == 1) return;
+  if (n_ranks == 1)
+    return;
 
   // Each rank hands the partitioner an equal slice of the elements; the answer is gathered so
   // every rank knows every element's rank.
@@ -47,7 +50,8 @@ void MeshPartition::assign_elements(PartitionMethod method) {
   const GlobalIndex end = n_elements * (comm_.rank() + 1) / n_ranks;
   std::vector<long long> slice_ranks(end - begin);
   if (method == PartitionMethod::block) {
-    for (GlobalIndex e = begin; e < end; ++e) slice_ranks[e - begin] = comm_.rank();
+    for (GlobalIndex e = begin; e < end; ++e)
+      slice_ranks[e - begin] = comm_.rank();
   } else {
     const int count = static_cast<int>(end - begin);
     std::vector<long long> ids(count);
@@ -69,10 +73,12 @@ void MeshPartition::assign_elements(PartitionMethod method) {
     Zoltan2::PartitioningProblem<CentroidAdapter> problem(&adapter, &parameters, comm_.teuchos());
     problem.solve();
     const auto* parts = problem.getSolution().getPartListView();
-    for (int i = 0; i < count; ++i) slice_ranks[i] = parts[i];
+    for (int i = 0; i < count; ++i)
+      slice_ranks[i] = parts[i];
   }
   const auto all = comm_.all_gather(slice_ranks);
-  for (GlobalIndex e = 0; e < n_elements; ++e) element_ranks_[e] = static_cast<int>(all[e]);
+  for (GlobalIndex e = 0; e < n_elements; ++e)
+    element_ranks_[e] = static_cast<int>(all[e]);
 }
 
 void MeshPartition::build_local_numbering() {
@@ -86,27 +92,33 @@ void MeshPartition::build_local_numbering() {
       const GlobalIndex* nodes = block.element_nodes(e);
       for (int a = 0; a < block.n_element_nodes(e); ++a) {
         int& node_rank = node_ranks_[nodes[a]];
-        if (node_rank < 0 || owner < node_rank) node_rank = owner;
-        if (owner == rank) touched[nodes[a]] = 1;
+        if (node_rank < 0 || owner < node_rank)
+          node_rank = owner;
+        if (owner == rank)
+          touched[nodes[a]] = 1;
       }
     }
   }
-  n_active_nodes_ = std::count_if(node_ranks_.begin(), node_ranks_.end(), [](int r) { return r >= 0; });
+  n_active_nodes_ =
+      std::count_if(node_ranks_.begin(), node_ranks_.end(), [](int r) { return r >= 0; });
 
   // Owned nodes first, then ghosts, each in ascending global order (keeps generator locality).
   global_nodes_.clear();
   for (GlobalIndex n = 0; n < n_nodes; ++n) {
-    if (touched[n] && node_ranks_[n] == rank) global_nodes_.push_back(n);
+    if (touched[n] && node_ranks_[n] == rank)
+      global_nodes_.push_back(n);
   }
   n_owned_nodes_ = static_cast<LocalIndex>(global_nodes_.size());
   for (GlobalIndex n = 0; n < n_nodes; ++n) {
-    if (touched[n] && node_ranks_[n] != rank) global_nodes_.push_back(n);
+    if (touched[n] && node_ranks_[n] != rank)
+      global_nodes_.push_back(n);
   }
   local_of_global_.assign(n_nodes, -1);
   local_coordinates_.resize(3 * global_nodes_.size());
   for (std::size_t i = 0; i < global_nodes_.size(); ++i) {
     local_of_global_[global_nodes_[i]] = static_cast<LocalIndex>(i);
-    for (int d = 0; d < 3; ++d) local_coordinates_[3 * i + d] = mesh_->coordinates[3 * global_nodes_[i] + d];
+    for (int d = 0; d < 3; ++d)
+      local_coordinates_[3 * i + d] = mesh_->coordinates[3 * global_nodes_[i] + d];
   }
 
   blocks_.clear();
@@ -115,7 +127,8 @@ void MeshPartition::build_local_numbering() {
     LocalBlock local;
     local.block = static_cast<int>(b);
     for (GlobalIndex e = 0; e < block.n_elements(); ++e) {
-      if (element_ranks_[block.first_element + e] != rank) continue;
+      if (element_ranks_[block.first_element + e] != rank)
+        continue;
       local.elements.push_back(e);
       const GlobalIndex* nodes = block.element_nodes(e);
       for (int a = 0; a < block.n_element_nodes(e); ++a) {
@@ -123,7 +136,8 @@ void MeshPartition::build_local_numbering() {
       }
       local.offsets.push_back(static_cast<LocalIndex>(local.connectivity.size()));
     }
-    if (!local.elements.empty()) blocks_.push_back(std::move(local));
+    if (!local.elements.empty())
+      blocks_.push_back(std::move(local));
   }
   first_local_elements_.assign(1, 0);
   for (const auto& block : blocks_) {
@@ -133,7 +147,8 @@ void MeshPartition::build_local_numbering() {
 
 LocalIndex MeshPartition::n_local_elements() const {
   LocalIndex total = 0;
-  for (const auto& block : blocks_) total += block.n_elements();
+  for (const auto& block : blocks_)
+    total += block.n_elements();
   return total;
 }
 

@@ -9,28 +9,35 @@ namespace railfe {
 
 CsvWriter::CsvWriter(const std::string& path, const std::vector<std::string>& columns, bool active)
     : n_columns_(columns.size()), active_(active) {
-  if (!active_) return;
+  if (!active_)
+    return;
   file_.open(path);
-  if (!file_) throw RunError("cannot write '" + path + "'");
+  if (!file_)
+    throw RunError("cannot write '" + path + "'");
   write_row(columns);
 }
 
 void CsvWriter::write_row(const std::vector<std::string>& cells) {
-  if (!active_) return;
-  if (cells.size() != n_columns_) throw std::logic_error("railfe: CSV row has the wrong width");
-  for (std::size_t i = 0; i < cells.size(); ++i) file_ << (i ? "," : "") << cells[i];
+  if (!active_)
+    return;
+  if (cells.size() != n_columns_)
+    throw std::logic_error("railfe: CSV row has the wrong width");
+  for (std::size_t i = 0; i < cells.size(); ++i)
+    file_ << (i ? "," : "") << cells[i];
   file_ << "\n";
 }
 
 void CsvWriter::write_row(const std::vector<double>& values) {
   std::vector<std::string> cells;
   cells.reserve(values.size());
-  for (double value : values) cells.push_back(format(value));
+  for (double value : values)
+    cells.push_back(format(value));
   write_row(cells);
 }
 
 void CsvWriter::flush() {
-  if (active_) file_.flush();
+  if (active_)
+    file_.flush();
 }
 
 std::string CsvWriter::format(double value) {

@@ -11,29 +11,37 @@ namespace railfe {
 namespace {
 
 // Exodus stores names of at most 32 characters by default.
-std::string short_name(const std::string& name) { return name.substr(0, 32); }
+std::string short_name(const std::string& name) {
+  return name.substr(0, 32);
+}
 
 void put_names(const ExodusFile& file, ex_entity_type type, const std::vector<std::string>& names) {
-  if (names.empty()) return;
+  if (names.empty())
+    return;
   std::vector<std::string> trimmed;
-  for (const auto& name : names) trimmed.push_back(short_name(name));
+  for (const auto& name : names)
+    trimmed.push_back(short_name(name));
   std::vector<char*> pointers;
-  for (auto& name : trimmed) pointers.push_back(name.data());
+  for (auto& name : trimmed)
+    pointers.push_back(name.data());
   file.check(ex_put_names(file.id(), type, pointers.data()), "writing names");
 }
 
 void put_variable_names(const ExodusFile& file, ex_entity_type type,
                         const std::vector<std::string>& names) {
-  if (names.empty()) return;
+  if (names.empty())
+    return;
   file.check(ex_put_variable_param(file.id(), type, static_cast<int>(names.size())),
              "declaring variables");
   std::vector<std::string> trimmed;
-  for (const auto& name : names) trimmed.push_back(short_name(name));
+  for (const auto& name : names)
+    trimmed.push_back(short_name(name));
   std::vector<char*> pointers;
-  for (auto& name : trimmed) pointers.push_back(name.data());
-  file.check(ex_put_variable_names(file.id(), type, static_cast<int>(names.size()),
-                                   pointers.data()),
-             "writing variable names");
+  for (auto& name : trimmed)
+    pointers.push_back(name.data());
+  file.check(
+      ex_put_variable_names(file.id(), type, static_cast<int>(names.size()), pointers.data()),
+      "writing variable names");
 }
 
 }  // namespace
@@ -42,7 +50,8 @@ ExodusWriter::ExodusWriter(const std::string& path, const Mesh& mesh, const std:
                            const std::vector<std::string>& nodal_variables,
                            const std::vector<std::string>& element_variables, bool active)
     : mesh_(&mesh), n_nodal_(nodal_variables.size()), n_element_(element_variables.size()) {
-  if (!active) return;
+  if (!active)
+    return;
   file_ = std::make_unique<ExodusFile>(path, ExodusMode::create);
   const ExodusFile& file = *file_;
   file.check(ex_put_init(file.id(), title.substr(0, MAX_LINE_LENGTH).c_str(), 3, mesh.n_nodes(),
@@ -71,10 +80,12 @@ ExodusWriter::ExodusWriter(const std::string& path, const Mesh& mesh, const std:
                             block.n_elements(), per_element, 0, 0, 0),
                "writing block " + block.name);
     std::vector<int64_t> connectivity(block.connectivity.begin(), block.connectivity.end());
-    for (auto& node : connectivity) node += 1;
+    for (auto& node : connectivity)
+      node += 1;
     if (!connectivity.empty()) {
-      file.check(ex_put_conn(file.id(), EX_ELEM_BLOCK, b + 1, connectivity.data(), nullptr, nullptr),
-                 "writing connectivity of block " + block.name);
+      file.check(
+          ex_put_conn(file.id(), EX_ELEM_BLOCK, b + 1, connectivity.data(), nullptr, nullptr),
+          "writing connectivity of block " + block.name);
     }
     names.push_back(block.name);
   }
@@ -86,7 +97,8 @@ ExodusWriter::ExodusWriter(const std::string& path, const Mesh& mesh, const std:
     file.check(ex_put_set_param(file.id(), EX_NODE_SET, s + 1, set.nodes.size(), 0),
                "writing node set " + set.name);
     std::vector<int64_t> nodes(set.nodes.begin(), set.nodes.end());
-    for (auto& node : nodes) node += 1;
+    for (auto& node : nodes)
+      node += 1;
     if (!nodes.empty()) {
       file.check(ex_put_set(file.id(), EX_NODE_SET, s + 1, nodes.data(), nullptr),
                  "writing node set " + set.name);
@@ -121,7 +133,8 @@ ExodusWriter::~ExodusWriter() = default;
 
 void ExodusWriter::write_step(double time, const std::vector<std::vector<double>>& nodal,
                               const std::vector<std::vector<double>>& element) {
-  if (!file_) return;
+  if (!file_)
+    return;
   if (nodal.size() != n_nodal_ || element.size() != n_element_) {
     throw std::logic_error("railfe: ExodusWriter::write_step got the wrong number of fields");
   }
@@ -136,7 +149,8 @@ void ExodusWriter::write_step(double time, const std::vector<std::vector<double>
   for (std::size_t v = 0; v < n_element_; ++v) {
     for (std::size_t b = 0; b < mesh_->blocks.size(); ++b) {
       const auto& block = mesh_->blocks[b];
-      if (block.n_elements() == 0) continue;
+      if (block.n_elements() == 0)
+        continue;
       file.check(ex_put_var(file.id(), step_, EX_ELEM_BLOCK, static_cast<int>(v + 1), b + 1,
                             block.n_elements(), element[v].data() + block.first_element),
                  "writing an element variable");
@@ -146,7 +160,8 @@ void ExodusWriter::write_step(double time, const std::vector<std::vector<double>
 }
 
 void ExodusWriter::close() {
-  if (file_) file_->close();
+  if (file_)
+    file_->close();
 }
 
 }  // namespace railfe

@@ -11,10 +11,12 @@ std::vector<std::vector<double>> scatter_on_root(const Communicator& comm,
   const auto ids = comm.gather_to_root(local_ids);
   const auto values = comm.gather_to_root(local_values);
   std::vector<std::vector<double>> result;
-  if (!comm.is_root()) return result;
+  if (!comm.is_root())
+    return result;
   result.assign(components, std::vector<double>(total, 0.0));
   for (std::size_t k = 0; k < ids.size(); ++k) {
-    for (int c = 0; c < components; ++c) result[c][ids[k]] = values[components * k + c];
+    for (int c = 0; c < components; ++c)
+      result[c][ids[k]] = values[components * k + c];
   }
   return result;
 }
@@ -36,7 +38,8 @@ std::vector<std::vector<double>> gather_element_field(const MeshPartition& parti
   std::vector<long long> ids;
   for (const auto& block : partition.blocks()) {
     const GlobalIndex first = partition.mesh().blocks[block.block].first_element;
-    for (GlobalIndex e : block.elements) ids.push_back(first + e);
+    for (GlobalIndex e : block.elements)
+      ids.push_back(first + e);
   }
   return scatter_on_root(partition.comm(), ids, local_values, components,
                          partition.mesh().n_elements());

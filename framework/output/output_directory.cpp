@@ -26,15 +26,18 @@ OutputDirectory::OutputDirectory(std::string path, const Communicator& comm)
       std::ifstream manifest(fs::path(path_) / kManifest);
       std::string name;
       while (std::getline(manifest, name)) {
-        if (!name.empty() && name.find('/') == std::string::npos) fs::remove(fs::path(path_) / name, error);
+        if (!name.empty() && name.find('/') == std::string::npos)
+          fs::remove(fs::path(path_) / name, error);
       }
       fs::remove(fs::path(path_) / kManifest, error);
       fs::remove(fs::path(path_) / "FAILED.txt", error);
       for (const auto& entry : fs::directory_iterator(path_, error)) {
-        if (entry.path().extension() == ".part") fs::remove(entry.path(), error);
+        if (entry.path().extension() == ".part")
+          fs::remove(entry.path(), error);
       }
       std::ofstream probe(fs::path(path_) / ".railfe-write-test");
-      if (!probe) problem = "output directory '" + path_ + "' is not writable";
+      if (!probe)
+        problem = "output directory '" + path_ + "' is not writable";
       probe.close();
       fs::remove(fs::path(path_) / ".railfe-write-test", error);
     }
@@ -43,7 +46,8 @@ OutputDirectory::OutputDirectory(std::string path, const Communicator& comm)
 }
 
 std::string OutputDirectory::staging_path(const std::string& name) {
-  if (std::find(names_.begin(), names_.end(), name) == names_.end()) names_.push_back(name);
+  if (std::find(names_.begin(), names_.end(), name) == names_.end())
+    names_.push_back(name);
   return (fs::path(path_) / (name + ".part")).string();
 }
 
@@ -59,9 +63,11 @@ void OutputDirectory::finalize() {
     for (const auto& name : names_) {
       std::error_code error;
       const fs::path staged = fs::path(path_) / (name + ".part");
-      if (!fs::exists(staged)) continue;
+      if (!fs::exists(staged))
+        continue;
       fs::rename(staged, fs::path(path_) / name, error);
-      if (error) problem = "cannot rename '" + staged.string() + "': " + error.message();
+      if (error)
+        problem = "cannot rename '" + staged.string() + "': " + error.message();
       manifest << name << "\n";
     }
   }
@@ -69,7 +75,8 @@ void OutputDirectory::finalize() {
 }
 
 void OutputDirectory::mark_failed(const std::string& message) const {
-  if (!comm_.is_root()) return;
+  if (!comm_.is_root())
+    return;
   std::ofstream failed(fs::path(path_) / "FAILED.txt");
   failed << "This run failed; files ending in .part are incomplete.\n" << message << "\n";
 }

@@ -12,9 +12,11 @@ Progress::Progress(std::string label, double total, const Communicator& comm, bo
       interval_(interval_seconds) {}
 
 void Progress::update(double done) {
-  if (!active_) return;
+  if (!active_)
+    return;
   const double elapsed = clock_.seconds();
-  if (elapsed - last_print_ < interval_) return;
+  if (elapsed - last_print_ < interval_)
+    return;
   last_print_ = elapsed;
   const double fraction = total_ > 0 ? done / total_ : 1.0;
   const double remaining = fraction > 0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
@@ -24,7 +26,8 @@ void Progress::update(double done) {
 }
 
 void Progress::finish() {
-  if (!active_) return;
+  if (!active_)
+    return;
   std::printf("[%s] done in %.2f s\n", label_.c_str(), clock_.seconds());
   std::fflush(stdout);
 }

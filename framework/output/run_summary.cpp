@@ -9,7 +9,8 @@ namespace railfe {
 
 RunSummary::Section& RunSummary::section(const std::string& name) {
   for (auto& existing : sections_) {
-    if (existing.name == name) return existing;
+    if (existing.name == name)
+      return existing;
   }
   sections_.push_back({name, {}});
   return sections_.back();
@@ -32,10 +33,12 @@ std::string RunSummary::text() const {
   for (const auto& section : sections_) {
     out << section.name << "\n";
     std::size_t width = 0;
-    for (const auto& line : section.lines) width = std::max(width, line.key.size());
+    for (const auto& line : section.lines)
+      width = std::max(width, line.key.size());
     for (const auto& line : section.lines) {
       out << "  " << line.key << std::string(width - line.key.size() + 2, ' ') << line.text;
-      if (!line.unit.empty()) out << " " << line.unit;
+      if (!line.unit.empty())
+        out << " " << line.unit;
       out << "\n";
     }
   }

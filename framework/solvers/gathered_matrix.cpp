@@ -1,9 +1,9 @@
 #include "framework/solvers/gathered_matrix.hpp"
 
+#include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Vector.hpp>
-#include <Teuchos_DefaultMpiComm.hpp>
 
 #include "framework/assembly/tpetra_compat.hpp"
 #include "framework/base/error.hpp"
@@ -37,14 +37,14 @@ GatheredMatrix::GatheredMatrix(const TpetraMatrix& A) {
   }
   global_indices_ = all;
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
-  root_map_ = Teuchos::rcp(
-      new TpetraMap(invalid, Teuchos::ArrayView<const GlobalIndex>(all.data(), all.size()), 0,
-                    comm));
+  root_map_ = Teuchos::rcp(new TpetraMap(
+      invalid, Teuchos::ArrayView<const GlobalIndex>(all.data(), all.size()), 0, comm));
   importer_ = Teuchos::rcp(new TpetraImport(row_map, root_map_));
   const auto root_matrix = Tpetra::importAndFillCompleteCrsMatrix<TpetraMatrix>(
       Teuchos::rcpFromRef(A), *importer_, root_map_, root_map_);
 
-  if (!on_root_) return;
+  if (!on_root_)
+    return;
   auto local = root_matrix->getLocalMatrixHost();
   const auto& column_map = *root_matrix->getColMap();
   const long n = static_cast<long>(all.size());
@@ -64,7 +64,8 @@ GatheredMatrix::GatheredMatrix(const TpetraMatrix& A) {
 std::vector<double> GatheredMatrix::gather(const TpetraVector& b) const {
   TpetraVector root(root_map_);
   root.doImport(b, *importer_, Tpetra::INSERT);
-  if (!on_root_) return {};
+  if (!on_root_)
+    return {};
   const auto data = root.getData();
   return std::vector<double>(data.begin(), data.end());
 }
@@ -84,8 +85,10 @@ void share_root_verdict(const TpetraMatrix& A, const std::string& root_problem) 
   unsigned long long length = message.size();
   MPI_Bcast(&length, 1, MPI_UNSIGNED_LONG_LONG, 0, *mpi->getRawMpiComm());
   message.resize(length);
-  if (length > 0) MPI_Bcast(message.data(), static_cast<int>(length), MPI_CHAR, 0, *mpi->getRawMpiComm());
-  if (length > 0) throw RunError(message);
+  if (length > 0)
+    MPI_Bcast(message.data(), static_cast<int>(length), MPI_CHAR, 0, *mpi->getRawMpiComm());
+  if (length > 0)
+    throw RunError(message);
 }
 
 std::string describe_dof(GlobalIndex dof, int dofs_per_node) {

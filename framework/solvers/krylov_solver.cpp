@@ -55,13 +55,14 @@ class KrylovSolver : public LinearSolver {
     auto parameters = Teuchos::rcp(new Teuchos::ParameterList);
     parameters->set("Convergence Tolerance", settings_.relative_tolerance);
     parameters->set("Maximum Iterations", settings_.maximum_iterations);
-    if (settings_.method == "gmres") parameters->set("Num Blocks", settings_.restart);
+    if (settings_.method == "gmres")
+      parameters->set("Num Blocks", settings_.restart);
     parameters->set("Verbosity", Belos::Errors + Belos::Warnings);
     Belos::SolverFactory<double, MV, OP> factory;
     auto solver = factory.create(settings_.method == "cg" ? "CG" : "GMRES", parameters);
     auto op = Teuchos::rcp_implicit_cast<const OP>(matrix_);
-    auto problem = Teuchos::rcp(new Belos::LinearProblem<double, MV, OP>(
-        op, Teuchos::rcpFromRef(x), Teuchos::rcpFromRef(b)));
+    auto problem = Teuchos::rcp(new Belos::LinearProblem<double, MV, OP>(op, Teuchos::rcpFromRef(x),
+                                                                         Teuchos::rcpFromRef(b)));
     if (!preconditioner_.is_null()) {
       if (settings_.method == "cg") {
         problem->setLeftPrec(preconditioner_);
@@ -96,9 +97,8 @@ class KrylovSolver : public LinearSolver {
     if (outcome != Belos::Converged || !accurate) {
       std::ostringstream message;
       message << report.method << " did not converge: after " << report.iterations
-              << " iterations the relative residual is " << norms.relative_residual
-              << " (target " << settings_.relative_tolerance << ", at most "
-              << settings_.maximum_iterations
+              << " iterations the relative residual is " << norms.relative_residual << " (target "
+              << settings_.relative_tolerance << ", at most " << settings_.maximum_iterations
               << " iterations). Raise 'Maximum iterations', choose another preconditioner, or "
                  "use a direct solver; also check that the model is restrained.";
       throw RunError(message.str());

@@ -10,16 +10,20 @@ ParameterSpec linear_solver_parameters() {
   spec.choice("Method", "cg",
               {{"cg", "conjugate gradients (Belos), for symmetric positive definite systems"},
                {"gmres", "restarted GMRES (Belos), for any nonsingular system"},
-               {"cholmod", "supernodal sparse Cholesky (SuiteSparse CHOLMOD, METIS ordering) "
-                           "gathered on rank 0: exact, best below a few 10^5 DOFs"},
-               {"klu2", "sparse LU (Amesos2 KLU2) gathered on rank 0: general but 50-100x "
-                        "slower than CHOLMOD on 3-D elasticity"}},
+               {"cholmod",
+                "supernodal sparse Cholesky (SuiteSparse CHOLMOD, METIS ordering) "
+                "gathered on rank 0: exact, best below a few 10^5 DOFs"},
+               {"klu2",
+                "sparse LU (Amesos2 KLU2) gathered on rank 0: general but 50-100x "
+                "slower than CHOLMOD on 3-D elasticity"}},
               "Solution method.");
   spec.choice("Preconditioner", "muelu",
-              {{"muelu", "algebraic multigrid (MueLu), plain aggregation with rigid-body modes: "
-                         "least memory and set-up time"},
-               {"muelu-sa", "algebraic multigrid (MueLu), smoothed aggregation: 3-5x fewer "
-                            "iterations for 2x the memory and set-up time"},
+              {{"muelu",
+                "algebraic multigrid (MueLu), plain aggregation with rigid-body modes: "
+                "least memory and set-up time"},
+               {"muelu-sa",
+                "algebraic multigrid (MueLu), smoothed aggregation: 3-5x fewer "
+                "iterations for 2x the memory and set-up time"},
                {"ilu", "incomplete LU, ILU(0), on each rank's rows"},
                {"jacobi", "diagonal scaling"},
                {"none", "no preconditioner"}},
@@ -41,8 +45,10 @@ ParameterSpec linear_solver_parameters() {
 std::unique_ptr<LinearSolver> create_linear_solver(const Teuchos::ParameterList& parameters) {
   const auto method = parameters.get<std::string>("Method");
   const double limit = parameters.get<double>("Backward error limit");
-  if (method == "cholmod") return make_cholmod_solver(limit);
-  if (method == "klu2") return make_klu2_solver(limit);
+  if (method == "cholmod")
+    return make_cholmod_solver(limit);
+  if (method == "klu2")
+    return make_klu2_solver(limit);
   KrylovSettings settings;
   settings.method = method;
   settings.preconditioner = parameters.get<std::string>("Preconditioner");

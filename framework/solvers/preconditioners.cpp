@@ -23,7 +23,8 @@ Teuchos::RCP<TpetraOperator> make_muelu(const Teuchos::RCP<const TpetraMatrix>& 
   parameters.set("coarse: max size", 1500);
   parameters.set("aggregation: type", "uncoupled");
   parameters.set("aggregation: drop tol", 0.0);
-  if (smoothed) parameters.set("transpose: use implicit", true);
+  if (smoothed)
+    parameters.set("transpose: use implicit", true);
   // Chebyshev keeps the preconditioner symmetric, as CG requires, and needs no inner solves.
   parameters.set("smoother: type", "CHEBYSHEV");
   parameters.sublist("smoother: params").set("chebyshev: degree", smoothed ? 2 : 1);
@@ -47,8 +48,8 @@ Teuchos::RCP<TpetraOperator> make_muelu(const Teuchos::RCP<const TpetraMatrix>& 
   if (!traits.near_null_space.is_null()) {
     user.set("Nullspace", Teuchos::rcp_const_cast<TpetraMultiVector>(traits.near_null_space));
   }
-  auto op = Teuchos::rcp_const_cast<TpetraOperator>(
-      Teuchos::rcp_implicit_cast<const TpetraOperator>(A));
+  auto op =
+      Teuchos::rcp_const_cast<TpetraOperator>(Teuchos::rcp_implicit_cast<const TpetraOperator>(A));
   return MueLu::CreateTpetraPreconditioner<double, LocalIndex, GlobalIndex,
                                            Tpetra::Map<>::node_type>(op, parameters);
 }
@@ -78,17 +79,24 @@ Teuchos::RCP<TpetraOperator> make_ifpack2(const std::string& kind,
 Teuchos::RCP<TpetraOperator> make_preconditioner(const std::string& kind,
                                                  const Teuchos::RCP<const TpetraMatrix>& A,
                                                  const ProblemTraits& traits) {
-  if (kind == "none") return Teuchos::null;
-  if (kind == "muelu") return make_muelu(A, traits, false);
-  if (kind == "muelu-sa") return make_muelu(A, traits, true);
+  if (kind == "none")
+    return Teuchos::null;
+  if (kind == "muelu")
+    return make_muelu(A, traits, false);
+  if (kind == "muelu-sa")
+    return make_muelu(A, traits, true);
   return make_ifpack2(kind, A);
 }
 
 std::string preconditioner_description(const std::string& kind) {
-  if (kind == "muelu") return "MueLu plain aggregation";
-  if (kind == "muelu-sa") return "MueLu smoothed aggregation";
-  if (kind == "ilu") return "Ifpack2 ILU(0)";
-  if (kind == "jacobi") return "Ifpack2 Jacobi";
+  if (kind == "muelu")
+    return "MueLu plain aggregation";
+  if (kind == "muelu-sa")
+    return "MueLu smoothed aggregation";
+  if (kind == "ilu")
+    return "Ifpack2 ILU(0)";
+  if (kind == "jacobi")
+    return "Ifpack2 Jacobi";
   return "no preconditioner";
 }
 

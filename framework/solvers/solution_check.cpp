@@ -38,7 +38,8 @@ ResidualNorms residual_norms(const TpetraMatrix& A, const TpetraVector& x, const
 }
 
 void require_backward_error(const ResidualNorms& norms, double limit, const std::string& method) {
-  if (std::isfinite(norms.backward_error) && norms.backward_error <= limit) return;
+  if (std::isfinite(norms.backward_error) && norms.backward_error <= limit)
+    return;
   std::ostringstream message;
   message << method << " returned a wrong solution: backward error " << norms.backward_error
           << " (relative residual " << norms.relative_residual << ") exceeds the limit " << limit

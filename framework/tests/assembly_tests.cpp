@@ -10,8 +10,8 @@
 #include <map>
 
 #include "framework/assembly/fe_matrix.hpp"
-#include "framework/base/error.hpp"
 #include "framework/assembly/linear_constraints.hpp"
+#include "framework/base/error.hpp"
 #include "framework/mesh/box_generator.hpp"
 #include "framework/solvers/direct_solvers.hpp"
 #include "framework/solvers/gathered_matrix.hpp"
@@ -74,7 +74,8 @@ TEST(FeMatrix, EqualsTheDenseSumOfElementMatrices) {
   FeMatrix matrix(*f.dofs);
   auto fill = [](GlobalIndex element, double* values) {
     for (int r = 0; r < 24; ++r) {
-      for (int c = 0; c < 24; ++c) values[24 * r + c] = test_entry(element, r, c);
+      for (int c = 0; c < 24; ++c)
+        values[24 * r + c] = test_entry(element, r, c);
     }
   };
   // Twice: the second assembly must start from zero again.
@@ -113,7 +114,9 @@ TEST(FeMatrix, EqualsTheDenseSumOfElementMatrices) {
 }
 
 // u*: a smooth field over global DOFs, used as the exact solution.
-double exact(GlobalIndex dof) { return std::sin(0.3 * dof) + 0.1 * (dof % 3); }
+double exact(GlobalIndex dof) {
+  return std::sin(0.3 * dof) + 0.1 * (dof % 3);
+}
 
 TEST(LinearConstraints, PrescribedValuesAreExactAndReactionsBalance) {
   Fixture f;
@@ -134,7 +137,8 @@ TEST(LinearConstraints, PrescribedValuesAreExactAndReactionsBalance) {
       constraints.prescribe(3 * node + d, exact(3 * node + d));
       // Loads at prescribed DOFs do not change the solution, only the reactions.
       const LocalIndex local = f.dofs->owned_map()->getLocalElement(3 * node + d);
-      if (local >= 0) forces.replaceLocalValue(local, 123.0);
+      if (local >= 0)
+        forces.replaceLocalValue(local, 123.0);
     }
   }
   constraints.finalize();
@@ -196,7 +200,8 @@ TEST(LinearConstraints, MultipointSolutionIsTheConstrainedMinimum) {
   const GatheredMatrix gathered(*K);
   const auto u_all = gathered.gather(u);
   const auto r_all = gathered.gather(residual);
-  if (!gathered.on_root()) return;
+  if (!gathered.on_root())
+    return;
   std::map<GlobalIndex, double> u_of, r_of;
   for (long i = 0; i < gathered.n_rows(); ++i) {
     u_of[gathered.global_index(i)] = u_all[i];
@@ -214,7 +219,8 @@ TEST(LinearConstraints, MultipointSolutionIsTheConstrainedMinimum) {
     projected.erase(slave);
   }
   projected.erase(fixed);
-  for (const auto& [dof, value] : projected) EXPECT_NEAR(value, 0.0, 1e-9) << "dof " << dof;
+  for (const auto& [dof, value] : projected)
+    EXPECT_NEAR(value, 0.0, 1e-9) << "dof " << dof;
 }
 
 TEST(LinearConstraints, ConflictsAreRefused) {

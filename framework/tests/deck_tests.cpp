@@ -36,8 +36,8 @@ ParameterSpec test_spec() {
 // the InputError thrown, or "" if none.
 std::string problem_with(const std::string& body) {
   try {
-    Deck deck = parse_deck("<ParameterList name=\"deck\">" + body + "</ParameterList>",
-                           "test.xml", "");
+    Deck deck =
+        parse_deck("<ParameterList name=\"deck\">" + body + "</ParameterList>", "test.xml", "");
     validate_and_complete(*deck.parameters, *test_spec().list(), deck.source, "");
   } catch (const InputError& error) {
     return error.what();
@@ -45,7 +45,8 @@ std::string problem_with(const std::string& body) {
   return "";
 }
 
-const std::string kValid = R"xml(<Parameter name="Young's modulus" type="double" value="2.1e11"/>)xml";
+const std::string kValid =
+    R"xml(<Parameter name="Young's modulus" type="double" value="2.1e11"/>)xml";
 
 TEST(Deck, ValidDeckGetsDefaults) {
   Deck deck = parse_deck("<ParameterList>" + kValid + "</ParameterList>", "test.xml", "");
@@ -60,10 +61,11 @@ TEST(Deck, ValidDeckGetsDefaults) {
 }
 
 TEST(Deck, IntegerForRealIsConverted) {
-  Deck deck = parse_deck(R"xml(<ParameterList><Parameter name="Young's modulus" type="int" value="7"/>
+  Deck deck =
+      parse_deck(R"xml(<ParameterList><Parameter name="Young's modulus" type="int" value="7"/>
                             <Parameter name="Origin" type="Array(int)" value="{1,2,3}"/>
                             </ParameterList>)xml",
-                         "test.xml", "");
+                 "test.xml", "");
   validate_and_complete(*deck.parameters, *test_spec().list(), deck.source, "");
   EXPECT_DOUBLE_EQ(deck.parameters->get<double>("Young's modulus"), 7.0);
   EXPECT_DOUBLE_EQ(deck.parameters->get<Teuchos::Array<double>>("Origin")[2], 3.0);
@@ -95,11 +97,13 @@ TEST(Deck, WrongTypeIsRefused) {
 }
 
 TEST(Deck, OutOfRangeValuesAreRefused) {
-  auto message = problem_with(R"xml(<Parameter name="Young's modulus" type="double" value="-2e11"/>)xml");
+  auto message =
+      problem_with(R"xml(<Parameter name="Young's modulus" type="double" value="-2e11"/>)xml");
   EXPECT_NE(message.find("'Young's modulus'"), std::string::npos) << message;
   EXPECT_NE(message.find("out of range"), std::string::npos) << message;
   EXPECT_NE(message.find("allowed: > 0"), std::string::npos) << message;
-  message = problem_with(kValid + R"xml(<Parameter name="Poisson's ratio" type="double" value="0.5"/>)xml");
+  message = problem_with(kValid +
+                         R"xml(<Parameter name="Poisson's ratio" type="double" value="0.5"/>)xml");
   EXPECT_NE(message.find("allowed: (-1, 0.5)"), std::string::npos) << message;
   message = problem_with(R"xml(<Parameter name="Young's modulus" type="double" value="0"/>)xml");
   EXPECT_NE(message.find("out of range"), std::string::npos) << message;
@@ -112,21 +116,23 @@ TEST(Deck, MissingRequiredValueIsNamed) {
 }
 
 TEST(Deck, ChoicesAndArraySizesAreEnforced) {
-  auto message = problem_with(kValid + R"xml(<Parameter name="Method" type="string" value="bicg"/>)xml");
+  auto message =
+      problem_with(kValid + R"xml(<Parameter name="Method" type="string" value="bicg"/>)xml");
   EXPECT_NE(message.find("not one of the choices"), std::string::npos) << message;
   EXPECT_NE(message.find("'cg', 'gmres'"), std::string::npos) << message;
-  message = problem_with(kValid + R"xml(<Parameter name="Origin" type="Array(double)" value="{1,2}"/>)xml");
+  message = problem_with(kValid +
+                         R"xml(<Parameter name="Origin" type="Array(double)" value="{1,2}"/>)xml");
   EXPECT_NE(message.find("has 2 entries"), std::string::npos) << message;
   EXPECT_NE(message.find("3 numbers"), std::string::npos) << message;
 }
 
 TEST(Deck, NamedSublistsAreValidatedWithTheirPath) {
-  auto message = problem_with(
-      kValid + R"xml(<ParameterList name="Loads"><ParameterList name="tip">
+  auto message = problem_with(kValid + R"xml(<ParameterList name="Loads"><ParameterList name="tip">
                   <Parameter name="Magnitude" type="double" value="5"/></ParameterList></ParameterList>)xml");
   EXPECT_NE(message.find("'Loads/tip/Node set'"), std::string::npos) << message;
   message = problem_with(
-      kValid + R"xml(<ParameterList name="Loads"><Parameter name="tip" type="int" value="1"/></ParameterList>)xml");
+      kValid +
+      R"xml(<ParameterList name="Loads"><Parameter name="tip" type="int" value="1"/></ParameterList>)xml");
   EXPECT_NE(message.find("must be a sublist"), std::string::npos) << message;
 }
 
@@ -136,9 +142,12 @@ TEST(Deck, MalformedXmlIsReported) {
   message = problem_with(R"xml(<Parameter name="Young's modulus" type="double" value="abc"/>)xml");
   EXPECT_NE(message.find("malformed parameter: 'abc' is not a number"), std::string::npos)
       << message;
-  message = problem_with(kValid + R"xml(<Parameter name="Origin" type="Array(double)" value="{1,x,3}"/>)xml");
+  message = problem_with(
+      kValid + R"xml(<Parameter name="Origin" type="Array(double)" value="{1,x,3}"/>)xml");
   EXPECT_NE(message.find("'x' is not a number"), std::string::npos) << message;
-  message = problem_with(kValid + R"xml(<ParameterList name="Solver"><Parameter name="Verbose" type="bool" value="yes"/></ParameterList>)xml");
+  message = problem_with(
+      kValid +
+      R"xml(<ParameterList name="Solver"><Parameter name="Verbose" type="bool" value="yes"/></ParameterList>)xml");
   EXPECT_NE(message.find("'yes' is not a bool"), std::string::npos) << message;
   message = problem_with(kValid + kValid);
   EXPECT_NE(message.find("given twice"), std::string::npos) << message;
@@ -154,7 +163,8 @@ TEST(Deck, DescribeListsEveryParameter) {
   std::ostringstream text, markdown;
   describe_parameters(text, *test_spec().list(), "", "Test", DescribeFormat::text);
   describe_parameters(markdown, *test_spec().list(), "", "Test", DescribeFormat::markdown);
-  for (const char* name : {"Young's modulus", "Poisson's ratio", "Maximum iterations", "Node set"}) {
+  for (const char* name :
+       {"Young's modulus", "Poisson's ratio", "Maximum iterations", "Node set"}) {
     EXPECT_NE(text.str().find(name), std::string::npos) << name;
     EXPECT_NE(markdown.str().find(name), std::string::npos) << name;
   }

@@ -58,7 +58,8 @@ TEST(Box, CountsSetsAndGrading) {
   for (const Side& side : mesh.side_set("xmax", "", "").sides) {
     const auto& block = mesh.blocks[0];
     const GlobalIndex* nodes = block.element_nodes(side.element);
-    for (int k : {1, 2, 5, 6}) EXPECT_DOUBLE_EQ(mesh.coordinates[3 * nodes[k]], 2.0);
+    for (int k : {1, 2, 5, 6})
+      EXPECT_DOUBLE_EQ(mesh.coordinates[3 * nodes[k]], 2.0);
     EXPECT_EQ(side.face, 1);
   }
 }
@@ -101,9 +102,9 @@ TEST(DerivedSets, BoxPointAndSideSelections) {
   spec.elements = {4, 4, 4};
   Mesh mesh = generate_box(spec);
   DerivedSetSpec corner{"corner", false, "", std::nullopt, std::array<double, 3>{1, 1, 1}, "p"};
-  DerivedSetSpec slab{"slab", false, "", std::array<double, 6>{0, 0.5, 0, 1, 0, 1}, std::nullopt,
-                      "b"};
-  DerivedSetSpec patch{"patch", true, "zmax", std::array<double, 6>{0, 0.5, 0, 0.5, 1, 1},
+  DerivedSetSpec slab{"slab",       false, "", std::array<double, 6>{0, 0.5, 0, 1, 0, 1},
+                      std::nullopt, "b"};
+  DerivedSetSpec patch{"patch",      true, "zmax", std::array<double, 6>{0, 0.5, 0, 0.5, 1, 1},
                        std::nullopt, "s"};
   add_derived_sets(mesh, {corner, slab, patch}, "deck.xml");
   ASSERT_EQ(mesh.node_set("corner", "", "").nodes.size(), 1u);
@@ -112,12 +113,14 @@ TEST(DerivedSets, BoxPointAndSideSelections) {
   EXPECT_EQ(mesh.side_set("patch", "", "").sides.size(), 4u);
   EXPECT_EQ(exterior_faces(mesh).size(), 6u * 16u);
 
-  DerivedSetSpec empty{"empty", false, "", std::array<double, 6>{5, 6, 5, 6, 5, 6}, std::nullopt,
-                       "Mesh/Node sets/empty"};
+  DerivedSetSpec empty{"empty",      false,
+                       "",           std::array<double, 6>{5, 6, 5, 6, 5, 6},
+                       std::nullopt, "Mesh/Node sets/empty"};
   auto message = input_error([&] { add_derived_sets(mesh, {empty}, "deck.xml"); });
   EXPECT_NE(message.find("selects no nodes"), std::string::npos) << message;
-  DerivedSetSpec clash{"xmin", false, "", std::array<double, 6>{0, 1, 0, 1, 0, 1}, std::nullopt,
-                       "Mesh/Node sets/xmin"};
+  DerivedSetSpec clash{"xmin",       false,
+                       "",           std::array<double, 6>{0, 1, 0, 1, 0, 1},
+                       std::nullopt, "Mesh/Node sets/xmin"};
   message = input_error([&] { add_derived_sets(mesh, {clash}, "deck.xml"); });
   EXPECT_NE(message.find("already exists"), std::string::npos) << message;
   message = input_error([&] { mesh.node_set("xmn", "deck.xml", "Steps/s/Node set"); });
@@ -219,9 +222,10 @@ TEST(GmshReader, RefusesWhatItCannotUse) {
   auto message = input_error([&] { read_gmsh_mesh((dir / "old.msh").string()); });
   EXPECT_NE(message.find("version 2.2 is not supported"), std::string::npos) << message;
   EXPECT_NE(message.find("line 2"), std::string::npos) << message;
-  std::ofstream(dir / "tet.msh") << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
-                                    "$Nodes\n1 4 1 4\n3 1 0 4\n1\n2\n3\n4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n$EndNodes\n"
-                                    "$Elements\n1 1 1 1\n3 1 4 1\n1 1 2 3 4\n$EndElements\n";
+  std::ofstream(dir / "tet.msh")
+      << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+         "$Nodes\n1 4 1 4\n3 1 0 4\n1\n2\n3\n4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n$EndNodes\n"
+         "$Elements\n1 1 1 1\n3 1 4 1\n1 1 2 3 4\n$EndElements\n";
   message = input_error([&] { read_gmsh_mesh((dir / "tet.msh").string()); });
   EXPECT_NE(message.find("tetrahedron"), std::string::npos) << message;
   message = input_error([&] { read_gmsh_mesh((dir / "none.msh").string()); });
@@ -233,8 +237,8 @@ TEST(Partition, EveryElementAndNodeHasOneOwner) {
   BoxSpec spec;
   spec.elements = {8, 6, 4};
   const Mesh mesh = generate_box(spec);
-  for (PartitionMethod method : {PartitionMethod::multijagged, PartitionMethod::rcb,
-                                 PartitionMethod::block}) {
+  for (PartitionMethod method :
+       {PartitionMethod::multijagged, PartitionMethod::rcb, PartitionMethod::block}) {
     const MeshPartition partition(mesh, comm, method);
     const long long elements = comm.sum(static_cast<long long>(partition.n_local_elements()));
     EXPECT_EQ(elements, mesh.n_elements());

@@ -32,7 +32,8 @@ std::string read(const fs::path& path) {
 // One directory shared by all ranks of a test (rank 0 creates it).
 fs::path shared_scratch(const std::string& name, const Communicator& comm) {
   const auto path = fs::temp_directory_path() / ("railfe_output_" + name);
-  if (comm.is_root()) fs::remove_all(path);
+  if (comm.is_root())
+    fs::remove_all(path);
   comm.barrier();
   return path;
 }
@@ -42,7 +43,8 @@ TEST(Csv, RoundTripsDoublesExactly) {
   EXPECT_EQ(std::stod(CsvWriter::format(value)), value);
   const Communicator comm;
   const auto dir = shared_scratch("csv", comm);
-  if (comm.is_root()) fs::create_directories(dir);
+  if (comm.is_root())
+    fs::create_directories(dir);
   comm.barrier();
   {
     CsvWriter csv((dir / "h.csv").string(), {"time_s", "force_N"}, comm.is_root());
@@ -73,7 +75,8 @@ TEST(OutputDirectory, FilesAppearOnlyWhenTheRunSucceeds) {
     OutputDirectory output(dir.string(), comm);
     const std::string staged = output.staging_path("result.csv");
     EXPECT_EQ(fs::path(staged).filename(), "result.csv.part");
-    if (comm.is_root()) std::ofstream(staged) << "x\n";
+    if (comm.is_root())
+      std::ofstream(staged) << "x\n";
     comm.barrier();
     EXPECT_FALSE(fs::exists(dir / "result.csv"));
     output.finalize();
@@ -86,7 +89,8 @@ TEST(OutputDirectory, FilesAppearOnlyWhenTheRunSucceeds) {
     OutputDirectory output(dir.string(), comm);
     EXPECT_FALSE(fs::exists(dir / "result.csv"));
     const std::string staged = output.staging_path("other.csv");
-    if (comm.is_root()) std::ofstream(staged) << "partial\n";
+    if (comm.is_root())
+      std::ofstream(staged) << "partial\n";
     output.mark_failed("solver diverged");
     comm.barrier();
     EXPECT_TRUE(fs::exists(dir / "other.csv.part"));
@@ -113,16 +117,19 @@ TEST(ExodusWriter, FieldsGatheredFromAllRanksReadBack) {
   for (LocalIndex n = 0; n < partition.n_owned_nodes(); ++n) {
     const double* c = partition.coordinates(n);
     const double value = c[0] + 10 * c[1] + 100 * c[2];
-    for (int k = 1; k <= 3; ++k) owned.push_back(k * value);
+    for (int k = 1; k <= 3; ++k)
+      owned.push_back(k * value);
   }
   std::vector<double> element_values;
   for (const auto& block : partition.blocks()) {
-    for (GlobalIndex e : block.elements) element_values.push_back(1000.0 + e);
+    for (GlobalIndex e : block.elements)
+      element_values.push_back(1000.0 + e);
   }
   const auto nodal = gather_node_field(partition, owned, 3);
   const auto element = gather_element_field(partition, element_values, 1);
   const auto dir = shared_scratch("exodus", comm);
-  if (comm.is_root()) fs::create_directories(dir);
+  if (comm.is_root())
+    fs::create_directories(dir);
   comm.barrier();
   const std::string path = (dir / "result.exo").string();
   {
@@ -157,7 +164,8 @@ TEST(ExodusWriter, FieldsGatheredFromAllRanksReadBack) {
                          100 * mesh.coordinates[3 * n + 2];
     EXPECT_DOUBLE_EQ(y[n], 2 * value);
   }
-  for (GlobalIndex e = 0; e < mesh.n_elements(); ++e) EXPECT_DOUBLE_EQ(marker[e], 1000.0 + e);
+  for (GlobalIndex e = 0; e < mesh.n_elements(); ++e)
+    EXPECT_DOUBLE_EQ(marker[e], 1000.0 + e);
 }
 
 }  // namespace

@@ -85,7 +85,8 @@ TpetraVector solve(const Problem& problem, const Teuchos::ParameterList& list, b
   solver->setup(problem.matrix->matrix(), traits);
   TpetraVector x(problem.dofs->owned_map());
   const SolveReport result = solver->solve(*problem.rhs, x);
-  if (report) *report = result;
+  if (report)
+    *report = result;
   return x;
 }
 

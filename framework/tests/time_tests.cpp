@@ -42,7 +42,8 @@ Motion integrate(const NewmarkScheme& scheme, double omega_dt, int steps, double
   NewmarkIntegrator integrator(scheme, 1);
   double u = 1, v = 0, a = -omega * omega;
   const double dt = omega_dt / omega;
-  for (int n = 0; n < steps; ++n) integrator.step(n * dt, dt, oscillator, &u, &v, &a);
+  for (int n = 0; n < steps; ++n)
+    integrator.step(n * dt, dt, oscillator, &u, &v, &a);
   return {u, v};
 }
 

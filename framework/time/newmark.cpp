@@ -7,9 +7,13 @@
 
 namespace railfe {
 
-NewmarkScheme NewmarkScheme::central_difference() { return {0.0, 0.5, 0.0}; }
+NewmarkScheme NewmarkScheme::central_difference() {
+  return {0.0, 0.5, 0.0};
+}
 
-NewmarkScheme NewmarkScheme::average_acceleration() { return {0.25, 0.5, 0.0}; }
+NewmarkScheme NewmarkScheme::average_acceleration() {
+  return {0.25, 0.5, 0.0};
+}
 
 NewmarkScheme NewmarkScheme::hht(double alpha) {
   if (!(alpha >= -1.0 / 3.0 && alpha <= 0.0)) {
@@ -18,10 +22,13 @@ NewmarkScheme NewmarkScheme::hht(double alpha) {
   return {(1 - alpha) * (1 - alpha) / 4, (1 - 2 * alpha) / 2, alpha};
 }
 
-double NewmarkScheme::spectral_radius_at_infinity() const { return (1 + alpha) / (1 - alpha); }
+double NewmarkScheme::spectral_radius_at_infinity() const {
+  return (1 + alpha) / (1 - alpha);
+}
 
 double NewmarkScheme::critical_step_frequency() const {
-  if (gamma >= 0.5 && 2 * beta >= gamma) return std::numeric_limits<double>::infinity();
+  if (gamma >= 0.5 && 2 * beta >= gamma)
+    return std::numeric_limits<double>::infinity();
   const double margin = gamma / 2 - beta;
   return margin > 0 ? 1.0 / std::sqrt(margin) : std::numeric_limits<double>::infinity();
 }

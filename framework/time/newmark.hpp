@@ -20,9 +20,9 @@ namespace railfe {
 
 /// The parameters of one member of the family.
 struct NewmarkScheme {
-  double beta = 0.25;   ///< β
-  double gamma = 0.5;   ///< γ
-  double alpha = 0.0;   ///< HHT α (0 for plain Newmark)
+  double beta = 0.25;  ///< β
+  double gamma = 0.5;  ///< γ
+  double alpha = 0.0;  ///< HHT α (0 for plain Newmark)
 
   /// Central difference: β = 0, γ = ½ (explicit, conditionally stable: ω Δt ≤ 2).
   static NewmarkScheme central_difference();

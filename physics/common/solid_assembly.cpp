@@ -9,8 +9,8 @@
 #include <sstream>
 
 #include "framework/base/error.hpp"
-#include "framework/mesh/hex8_topology.hpp"
 #include "framework/deck/expression.hpp"
+#include "framework/mesh/hex8_topology.hpp"
 
 namespace railfe {
 
@@ -32,7 +32,8 @@ void assemble_elastic_stiffness(FeMatrix& K, const MaterialTable& materials) {
   K.begin_assembly();
   for (std::size_t b = 0; b < partition.blocks().size(); ++b) {
     const auto& block = partition.blocks()[b];
-    if (partition.mesh().blocks[block.block].type != ElementType::hex8) continue;
+    if (partition.mesh().blocks[block.block].type != ElementType::hex8)
+      continue;
     const LameConstants lame = materials.of_block(block.block).lame();
     const LocalIndex first = partition.first_local_element(b);
     for (LocalIndex e = 0; e < block.n_elements(); ++e) {
@@ -49,12 +50,14 @@ namespace {
 // Local hex8 element holding global element \p element, or false if another rank has it.
 bool find_local_element(const MeshPartition& partition, GlobalIndex element,
                         const LocalBlock** block_out, LocalIndex* local_out) {
-  if (partition.element_ranks()[element] != partition.comm().rank()) return false;
+  if (partition.element_ranks()[element] != partition.comm().rank())
+    return false;
   const Mesh& mesh = partition.mesh();
   const int block_index = mesh.block_of(element);
   const GlobalIndex in_block = element - mesh.blocks[block_index].first_element;
   for (const auto& block : partition.blocks()) {
-    if (block.block != block_index) continue;
+    if (block.block != block_index)
+      continue;
     const auto it = std::lower_bound(block.elements.begin(), block.elements.end(), in_block);
     *block_out = &block;
     *local_out = static_cast<LocalIndex>(it - block.elements.begin());
@@ -68,7 +71,8 @@ double side_set_area(const SideSet& set, const MeshPartition& partition) {
   for (const Side& side : set.sides) {
     const LocalBlock* block;
     LocalIndex e;
-    if (!find_local_element(partition, side.element, &block, &e)) continue;
+    if (!find_local_element(partition, side.element, &block, &e))
+      continue;
     double x[8][3];
     element_coordinates(partition, *block, e, x);
     area += hex8_face_area(x, side.face);
@@ -86,10 +90,11 @@ void assemble_solid_loads(const SolidConditions& conditions, const MaterialTable
   {
     auto f = overlap.getDataNonConst();
     double x[8][3];
-    const bool has_gravity = conditions.gravity[0] != 0 || conditions.gravity[1] != 0 ||
-                             conditions.gravity[2] != 0;
+    const bool has_gravity =
+        conditions.gravity[0] != 0 || conditions.gravity[1] != 0 || conditions.gravity[2] != 0;
     for (const auto& block : partition.blocks()) {
-      if (!has_gravity || mesh.blocks[block.block].type != ElementType::hex8) continue;
+      if (!has_gravity || mesh.blocks[block.block].type != ElementType::hex8)
+        continue;
       const double density = materials.of_block(block.block).density;
       const double body[3] = {density * conditions.gravity[0], density * conditions.gravity[1],
                               density * conditions.gravity[2]};
@@ -99,22 +104,26 @@ void assemble_solid_loads(const SolidConditions& conditions, const MaterialTable
         hex8_body_force(x, body, element_forces);
         const LocalIndex* nodes = block.connectivity.data() + block.offsets[e];
         for (int a = 0; a < 8; ++a) {
-          for (int d = 0; d < 3; ++d) f[3 * nodes[a] + d] += element_forces[3 * a + d];
+          for (int d = 0; d < 3; ++d)
+            f[3 * nodes[a] + d] += element_forces[3 * a + d];
         }
       }
     }
     for (const auto& load : conditions.surface_loads) {
       const SideSet& set = mesh.side_set(load.side_set, "", "");
       std::array<double, 3> traction{};
-      if (load.traction) traction = *load.traction;
+      if (load.traction)
+        traction = *load.traction;
       if (load.total_force) {
         const double area = side_set_area(set, partition);
-        for (int d = 0; d < 3; ++d) traction[d] = (*load.total_force)[d] / area;
+        for (int d = 0; d < 3; ++d)
+          traction[d] = (*load.total_force)[d] / area;
       }
       for (const Side& side : set.sides) {
         const LocalBlock* block;
         LocalIndex e;
-        if (!find_local_element(partition, side.element, &block, &e)) continue;
+        if (!find_local_element(partition, side.element, &block, &e))
+          continue;
         element_coordinates(partition, *block, e, x);
         double face_forces[12];
         if (load.pressure) {
@@ -125,7 +134,8 @@ void assemble_solid_loads(const SolidConditions& conditions, const MaterialTable
         const LocalIndex* nodes = block->connectivity.data() + block->offsets[e];
         for (int k = 0; k < 4; ++k) {
           const LocalIndex node = nodes[kHex8FaceNodes[side.face][k]];
-          for (int d = 0; d < 3; ++d) f[3 * node + d] += face_forces[3 * k + d];
+          for (int d = 0; d < 3; ++d)
+            f[3 * node + d] += face_forces[3 * k + d];
         }
       }
     }
@@ -136,11 +146,14 @@ void assemble_solid_loads(const SolidConditions& conditions, const MaterialTable
   for (const auto& force : conditions.nodal_forces) {
     const NodeSet& set = mesh.node_set(force.node_set, "", "");
     long long active = 0;
-    for (GlobalIndex node : set.nodes) active += partition.node_ranks()[node] >= 0;
+    for (GlobalIndex node : set.nodes)
+      active += partition.node_ranks()[node] >= 0;
     for (GlobalIndex node : set.nodes) {
       const LocalIndex local = partition.local_node(node);
-      if (local < 0 || local >= partition.n_owned_nodes()) continue;
-      for (int d = 0; d < 3; ++d) f[3 * local + d] += force.total_force[d] / active;
+      if (local < 0 || local >= partition.n_owned_nodes())
+        continue;
+      for (int d = 0; d < 3; ++d)
+        f[3 * local + d] += force.total_force[d] / active;
     }
   }
 }
@@ -155,17 +168,16 @@ std::vector<std::pair<GlobalIndex, GlobalIndex>> pair_tied_nodes(const Tie& tie,
   std::vector<std::pair<GlobalIndex, GlobalIndex>> pairs;
   for (GlobalIndex slave : mesh.node_set(tie.slave_set, deck, path).nodes) {
     const double* s = &mesh.coordinates[3 * slave];
-    auto first = std::lower_bound(masters.begin(), masters.end(), s[0] - tie.tolerance,
-                                  [&](GlobalIndex m, double value) {
-                                    return mesh.coordinates[3 * m] < value;
-                                  });
+    auto first = std::lower_bound(
+        masters.begin(), masters.end(), s[0] - tie.tolerance,
+        [&](GlobalIndex m, double value) { return mesh.coordinates[3 * m] < value; });
     GlobalIndex match = -1;
     for (auto it = first; it != masters.end() && mesh.coordinates[3 * *it] <= s[0] + tie.tolerance;
          ++it) {
       const double* m = &mesh.coordinates[3 * *it];
-      const double distance = std::sqrt((m[0] - s[0]) * (m[0] - s[0]) +
-                                        (m[1] - s[1]) * (m[1] - s[1]) +
-                                        (m[2] - s[2]) * (m[2] - s[2]));
+      const double distance =
+          std::sqrt((m[0] - s[0]) * (m[0] - s[0]) + (m[1] - s[1]) * (m[1] - s[1]) +
+                    (m[2] - s[2]) * (m[2] - s[2]));
       if (distance <= tie.tolerance && *it != slave) {
         match = *it;
         break;
@@ -174,8 +186,8 @@ std::vector<std::pair<GlobalIndex, GlobalIndex>> pair_tied_nodes(const Tie& tie,
     if (match < 0) {
       std::ostringstream problem;
       problem << "slave node " << slave + 1 << " of '" << tie.slave_set << "' at (" << s[0] << ", "
-              << s[1] << ", " << s[2] << ") has no other node of '" << tie.master_set
-              << "' within " << tie.tolerance << " m";
+              << s[1] << ", " << s[2] << ") has no other node of '" << tie.master_set << "' within "
+              << tie.tolerance << " m";
       throw_input_error(deck, path, problem.str(),
                         "node sets whose nodes coincide pairwise (raise Tolerance if they are "
                         "close but not equal)");
@@ -185,25 +197,30 @@ std::vector<std::pair<GlobalIndex, GlobalIndex>> pair_tied_nodes(const Tie& tie,
   return pairs;
 }
 
-void add_solid_constraints(const SolidConditions& conditions,
-                           const std::vector<std::vector<std::pair<GlobalIndex, GlobalIndex>>>& ties,
-                           const DofMap& dofs, LinearConstraints& constraints) {
+void add_solid_constraints(
+    const SolidConditions& conditions,
+    const std::vector<std::vector<std::pair<GlobalIndex, GlobalIndex>>>& ties, const DofMap& dofs,
+    LinearConstraints& constraints) {
   const MeshPartition& partition = dofs.partition();
   const Mesh& mesh = partition.mesh();
   for (const auto& condition : conditions.displacements) {
     std::optional<Expression> expression;
-    if (!condition.expression.empty()) expression.emplace(condition.expression, "", "");
+    if (!condition.expression.empty())
+      expression.emplace(condition.expression, "", "");
     for (GlobalIndex node : mesh.node_set(condition.node_set, "", "").nodes) {
       const LocalIndex local = partition.local_node(node);
-      if (local < 0 || local >= partition.n_owned_nodes()) continue;
+      if (local < 0 || local >= partition.n_owned_nodes())
+        continue;
       const double* c = partition.coordinates(local);
       const double value = expression ? (*expression)(c[0], c[1], c[2]) : condition.value;
-      for (int component : condition.components) constraints.prescribe(3 * node + component, value);
+      for (int component : condition.components)
+        constraints.prescribe(3 * node + component, value);
     }
   }
   for (const auto& pairs : ties) {
     for (const auto& [slave, master] : pairs) {
-      if (partition.node_ranks()[slave] < 0 || partition.node_ranks()[master] < 0) continue;
+      if (partition.node_ranks()[slave] < 0 || partition.node_ranks()[master] < 0)
+        continue;
       for (int d = 0; d < 3; ++d) {
         constraints.add_multipoint({3 * slave + d, {{3 * master + d, 1.0}}, 0.0});
       }
@@ -227,7 +244,8 @@ std::vector<double> element_stresses(const MeshPartition& partition, const Mater
       element_coordinates(partition, block, e, x);
       const LocalIndex* nodes = block.connectivity.data() + block.offsets[e];
       for (int a = 0; a < 8; ++a) {
-        for (int d = 0; d < 3; ++d) u[3 * a + d] = u_overlap[3 * nodes[a] + d];
+        for (int d = 0; d < 3; ++d)
+          u[3 * a + d] = u_overlap[3 * nodes[a] + d];
       }
       hex8_centre_stress(x, u, materials.of_block(block.block).lame(), stress);
       stresses.insert(stresses.end(), stress, stress + 6);
@@ -252,20 +270,25 @@ ProblemTraits elasticity_traits(const DofMap& dofs) {
   // Rigid-body modes about the centroid keep the six vectors well scaled.
   double centre[3] = {0, 0, 0};
   for (LocalIndex n = 0; n < n_owned; ++n) {
-    for (int d = 0; d < 3; ++d) centre[d] += partition.coordinates(n)[d];
+    for (int d = 0; d < 3; ++d)
+      centre[d] += partition.coordinates(n)[d];
   }
   const double count = partition.comm().sum(static_cast<double>(n_owned));
-  for (int d = 0; d < 3; ++d) centre[d] = partition.comm().sum(centre[d]) / count;
+  for (int d = 0; d < 3; ++d)
+    centre[d] = partition.comm().sum(centre[d]) / count;
   for (int d = 0; d < 3; ++d) {
     auto column = coordinates->getDataNonConst(d);
-    for (LocalIndex n = 0; n < n_owned; ++n) column[n] = partition.coordinates(n)[d];
+    for (LocalIndex n = 0; n < n_owned; ++n)
+      column[n] = partition.coordinates(n)[d];
   }
   std::vector<Teuchos::ArrayRCP<double>> mode(6);
-  for (int k = 0; k < 6; ++k) mode[k] = modes->getDataNonConst(k);
+  for (int k = 0; k < 6; ++k)
+    mode[k] = modes->getDataNonConst(k);
   for (LocalIndex n = 0; n < n_owned; ++n) {
     const double* c = partition.coordinates(n);
     const double x = c[0] - centre[0], y = c[1] - centre[1], z = c[2] - centre[2];
-    for (int d = 0; d < 3; ++d) mode[d][3 * n + d] = 1.0;  // translations
+    for (int d = 0; d < 3; ++d)
+      mode[d][3 * n + d] = 1.0;  // translations
     // rotations about x, y, z: ω × r
     mode[3][3 * n + 1] = -z;
     mode[3][3 * n + 2] = y;

@@ -35,9 +35,10 @@ std::vector<std::pair<GlobalIndex, GlobalIndex>> pair_tied_nodes(const Tie& tie,
                                                                  const std::string& path);
 
 /// Adds the Displacements and the tie pairs (per tie, from pair_tied_nodes) to \p constraints.
-void add_solid_constraints(const SolidConditions& conditions,
-                           const std::vector<std::vector<std::pair<GlobalIndex, GlobalIndex>>>& ties,
-                           const DofMap& dofs, LinearConstraints& constraints);
+void add_solid_constraints(
+    const SolidConditions& conditions,
+    const std::vector<std::vector<std::pair<GlobalIndex, GlobalIndex>>>& ties, const DofMap& dofs,
+    LinearConstraints& constraints);
 
 /// Centre stresses (6 per element: xx, yy, zz, xy, yz, xz) of the local hex8 elements in
 /// partition order, from displacements \p u_overlap over the overlapping DOFs; other element

@@ -17,8 +17,9 @@ void add_solid_condition_parameters(ParameterSpec& spec) {
                     "each node, e.g. '1e-3*(2*x+y+z)/2'.");
   spec.named_sublists("Displacements", displacement, "Prescribed displacements (Dirichlet).");
 
-  ParameterSpec surface("A load on a side set: give exactly one of Traction, Pressure and Total "
-                        "force.");
+  ParameterSpec surface(
+      "A load on a side set: give exactly one of Traction, Pressure and Total "
+      "force.");
   surface.required_text("Side set", "The element faces it acts on.");
   surface.real_array("Traction", {}, "Uniform traction vector.", "Pa", 3);
   surface.real_array("Pressure", {}, "Pressure against the outward normal (one number).", "Pa", 1);
@@ -62,7 +63,8 @@ std::vector<int> parse_components(const std::string& letters, const std::string&
     }
     components.push_back(c);
   }
-  if (components.empty()) throw_input_error(deck, path, "is empty", "the letters x, y and z");
+  if (components.empty())
+    throw_input_error(deck, path, "is empty", "the letters x, y and z");
   return components;
 }
 
@@ -87,7 +89,8 @@ SolidConditions read_solid_conditions(const Teuchos::ParameterList& step, const 
         parse_components(list.template get<std::string>("Components"), deck, where + "/Components");
     condition.value = list.template get<double>("Value");
     condition.expression = list.template get<std::string>("Expression");
-    if (!condition.expression.empty()) Expression(condition.expression, deck, where + "/Expression");
+    if (!condition.expression.empty())
+      Expression(condition.expression, deck, where + "/Expression");
     conditions.displacements.push_back(condition);
   });
   for_each_sublist(step.sublist("Surface loads"), [&](const std::string& name, const auto& list) {
@@ -97,11 +100,14 @@ SolidConditions read_solid_conditions(const Teuchos::ParameterList& step, const 
     const auto& traction = list.template get<Teuchos::Array<double>>("Traction");
     const auto& pressure = list.template get<Teuchos::Array<double>>("Pressure");
     const auto& total = list.template get<Teuchos::Array<double>>("Total force");
-    if (!traction.empty()) load.traction = vector3(traction);
-    if (!pressure.empty()) load.pressure = pressure[0];
-    if (!total.empty()) load.total_force = vector3(total);
-    const int given = load.traction.has_value() + load.pressure.has_value() +
-                      load.total_force.has_value();
+    if (!traction.empty())
+      load.traction = vector3(traction);
+    if (!pressure.empty())
+      load.pressure = pressure[0];
+    if (!total.empty())
+      load.total_force = vector3(total);
+    const int given =
+        load.traction.has_value() + load.pressure.has_value() + load.total_force.has_value();
     if (given != 1) {
       throw_input_error(deck, path + "/Surface loads/" + name,
                         "gives " + std::to_string(given) + " of Traction, Pressure, Total force",
@@ -129,7 +135,8 @@ SolidConditions read_solid_conditions(const Teuchos::ParameterList& step, const 
 void check_solid_conditions(const SolidConditions& conditions, const Mesh& mesh,
                             const std::string& deck, const std::string& path) {
   for (const auto& condition : conditions.displacements) {
-    mesh.node_set(condition.node_set, deck, path + "/Displacements/" + condition.name + "/Node set");
+    mesh.node_set(condition.node_set, deck,
+                  path + "/Displacements/" + condition.name + "/Node set");
   }
   for (const auto& load : conditions.surface_loads) {
     mesh.side_set(load.side_set, deck, path + "/Surface loads/" + load.name + "/Side set");

@@ -18,27 +18,27 @@ namespace railfe {
 
 /// Prescribed displacement components of a node set.
 struct DisplacementCondition {
-  std::string name;                ///< its name in the deck
-  std::string node_set;            ///< where it applies
-  std::vector<int> components;     ///< 0 = x, 1 = y, 2 = z
-  double value = 0;                ///< prescribed value (m), when no expression is given
-  std::string expression;          ///< function of x, y, z (m); overrides value when not empty
+  std::string name;             ///< its name in the deck
+  std::string node_set;         ///< where it applies
+  std::vector<int> components;  ///< 0 = x, 1 = y, 2 = z
+  double value = 0;             ///< prescribed value (m), when no expression is given
+  std::string expression;       ///< function of x, y, z (m); overrides value when not empty
 };
 
 /// A distributed load on a side set: a traction vector, a pressure, or a total force spread
 /// uniformly over the set's area.
 struct SurfaceLoad {
-  std::string name;                           ///< its name in the deck
-  std::string side_set;                       ///< where it acts
+  std::string name;                                  ///< its name in the deck
+  std::string side_set;                              ///< where it acts
   std::optional<std::array<double, 3>> traction;     ///< Pa
-  std::optional<double> pressure;                     ///< Pa, against the outward normal
+  std::optional<double> pressure;                    ///< Pa, against the outward normal
   std::optional<std::array<double, 3>> total_force;  ///< N
 };
 
 /// A force shared equally by the nodes of a node set.
 struct NodalForce {
-  std::string name;                  ///< its name in the deck
-  std::string node_set;              ///< the nodes
+  std::string name;                     ///< its name in the deck
+  std::string node_set;                 ///< the nodes
   std::array<double, 3> total_force{};  ///< N, summed over the nodes
 };
 

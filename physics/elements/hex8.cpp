@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "framework/mesh/hex8_topology.hpp"
 #include "framework/mesh/hex8_shape.hpp"
+#include "framework/mesh/hex8_topology.hpp"
 
 namespace railfe {
 
@@ -33,12 +33,14 @@ void hex8_stiffness(const double x[8][3], const LameConstants& material, double*
   const Hex8GaussTable& table = hex8_gauss_table();
   Lanes J[3][3];  // J[d][k], lanes = points: ∂x_d/∂ξ_k
   for (int d = 0; d < 3; ++d) {
-    for (int k = 0; k < 3; ++k) J[d][k] = Lanes{};
+    for (int k = 0; k < 3; ++k)
+      J[d][k] = Lanes{};
   }
   for (int a = 0; a < 8; ++a) {
     for (int k = 0; k < 3; ++k) {
       const Lanes dN = load_lanes(table.dN_by_point[k][a]);
-      for (int d = 0; d < 3; ++d) J[d][k] += x[a][d] * dN;
+      for (int d = 0; d < 3; ++d)
+        J[d][k] += x[a][d] * dN;
     }
   }
   const Lanes c00 = J[1][1] * J[2][2] - J[1][2] * J[2][1];
@@ -48,13 +50,12 @@ void hex8_stiffness(const double x[8][3], const LameConstants& material, double*
   const Lanes r = 1.0 / det;
   alignas(64) double inverse[3][3][8];  // inverse[k][i][q] = ∂ξ_k/∂x_i at point q
   alignas(64) double weight[8];
-  const Lanes inverse_lanes[3][3] = {
-      {c00 * r, (J[0][2] * J[2][1] - J[0][1] * J[2][2]) * r,
-       (J[0][1] * J[1][2] - J[0][2] * J[1][1]) * r},
-      {c01 * r, (J[0][0] * J[2][2] - J[0][2] * J[2][0]) * r,
-       (J[0][2] * J[1][0] - J[0][0] * J[1][2]) * r},
-      {c02 * r, (J[0][1] * J[2][0] - J[0][0] * J[2][1]) * r,
-       (J[0][0] * J[1][1] - J[0][1] * J[1][0]) * r}};
+  const Lanes inverse_lanes[3][3] = {{c00 * r, (J[0][2] * J[2][1] - J[0][1] * J[2][2]) * r,
+                                      (J[0][1] * J[1][2] - J[0][2] * J[1][1]) * r},
+                                     {c01 * r, (J[0][0] * J[2][2] - J[0][2] * J[2][0]) * r,
+                                      (J[0][2] * J[1][0] - J[0][0] * J[1][2]) * r},
+                                     {c02 * r, (J[0][1] * J[2][0] - J[0][0] * J[2][1]) * r,
+                                      (J[0][0] * J[1][1] - J[0][1] * J[1][0]) * r}};
   __builtin_memcpy(inverse, inverse_lanes, sizeof inverse);
   __builtin_memcpy(weight, &det, sizeof weight);
 
@@ -90,7 +91,8 @@ void hex8_stiffness(const double x[8][3], const LameConstants& material, double*
       alignas(64) double value[3][8];
       for (int j = 0; j < 3; ++j) {
         Lanes v = lambda * H[i][j][a] + mu * H[j][i][a];
-        if (i == j) v += trace;
+        if (i == j)
+          v += trace;
         __builtin_memcpy(value[j], &v, sizeof v);
       }
       double* row = stiffness + (3 * a + i) * 24;
@@ -106,11 +108,13 @@ void hex8_stiffness(const double x[8][3], const LameConstants& material, double*
 void hex8_body_force(const double x[8][3], const double b[3], double* forces) {
   const Hex8GaussTable& table = hex8_gauss_table();
   double gradient[3][8];
-  for (int k = 0; k < 24; ++k) forces[k] = 0;
+  for (int k = 0; k < 24; ++k)
+    forces[k] = 0;
   for (int q = 0; q < 8; ++q) {
     const double weight = hex8_gradients(x, table.dN[q], gradient);
     for (int a = 0; a < 8; ++a) {
-      for (int d = 0; d < 3; ++d) forces[3 * a + d] += table.N[q][a] * weight * b[d];
+      for (int d = 0; d < 3; ++d)
+        forces[3 * a + d] += table.N[q][a] * weight * b[d];
     }
   }
 }
@@ -119,7 +123,8 @@ double hex8_volume(const double x[8][3]) {
   const Hex8GaussTable& table = hex8_gauss_table();
   double gradient[3][8];
   double volume = 0;
-  for (int q = 0; q < 8; ++q) volume += hex8_gradients(x, table.dN[q], gradient);
+  for (int q = 0; q < 8; ++q)
+    volume += hex8_gradients(x, table.dN[q], gradient);
   return volume;
 }
 
@@ -130,7 +135,8 @@ void hex8_centre_stress(const double x[8][3], const double* u, const LameConstan
   double du[3][3] = {};  // du[i][j] = ∂u_i/∂x_j
   for (int a = 0; a < 8; ++a) {
     for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) du[i][j] += u[3 * a + i] * gradient[j][a];
+      for (int j = 0; j < 3; ++j)
+        du[i][j] += u[3 * a + i] * gradient[j][a];
     }
   }
   const double trace = du[0][0] + du[1][1] + du[2][2];
@@ -151,7 +157,8 @@ template <typename TractionOf>
 void integrate_face(const double x[8][3], int face, TractionOf traction_of, double forces[12]) {
   static constexpr double kCorner[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
   const double g = 1.0 / std::sqrt(3.0);
-  for (int k = 0; k < 12; ++k) forces[k] = 0;
+  for (int k = 0; k < 12; ++k)
+    forces[k] = 0;
   for (int q = 0; q < 4; ++q) {
     const double s = g * kCorner[q][0], t = g * kCorner[q][1];
     double dxds[3] = {}, dxdt[3] = {}, N[4];
@@ -168,23 +175,27 @@ void integrate_face(const double x[8][3], int face, TractionOf traction_of, doub
     const double normal[3] = {dxds[1] * dxdt[2] - dxds[2] * dxdt[1],
                               dxds[2] * dxdt[0] - dxds[0] * dxdt[2],
                               dxds[0] * dxdt[1] - dxds[1] * dxdt[0]};
-    const double area = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+    const double area =
+        std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
     const double unit[3] = {normal[0] / area, normal[1] / area, normal[2] / area};
     double traction[3];
     traction_of(unit, traction);
     for (int k = 0; k < 4; ++k) {
-      for (int d = 0; d < 3; ++d) forces[3 * k + d] += N[k] * traction[d] * area;
+      for (int d = 0; d < 3; ++d)
+        forces[3 * k + d] += N[k] * traction[d] * area;
     }
   }
 }
 
 }  // namespace
 
-void hex8_face_traction(const double x[8][3], int face, const double traction[3], double forces[12]) {
+void hex8_face_traction(const double x[8][3], int face, const double traction[3],
+                        double forces[12]) {
   integrate_face(
       x, face,
       [&](const double*, double* t) {
-        for (int d = 0; d < 3; ++d) t[d] = traction[d];
+        for (int d = 0; d < 3; ++d)
+          t[d] = traction[d];
       },
       forces);
 }
@@ -193,7 +204,8 @@ void hex8_face_pressure(const double x[8][3], int face, double pressure, double 
   integrate_face(
       x, face,
       [&](const double* n, double* t) {
-        for (int d = 0; d < 3; ++d) t[d] = -pressure * n[d];
+        for (int d = 0; d < 3; ++d)
+          t[d] = -pressure * n[d];
       },
       forces);
 }
@@ -203,7 +215,8 @@ double hex8_face_area(const double x[8][3], int face) {
   const double unit_z[3] = {0, 0, 1};
   hex8_face_traction(x, face, unit_z, forces);
   double area = 0;
-  for (int k = 0; k < 4; ++k) area += forces[3 * k + 2];
+  for (int k = 0; k < 4; ++k)
+    area += forces[3 * k + 2];
   return area;
 }
 

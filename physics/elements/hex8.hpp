@@ -34,7 +34,8 @@ void hex8_centre_stress(const double x[8][3], const double* u, const LameConstan
 
 /// Consistent nodal forces (4 face nodes × 3, in kHex8FaceNodes order) of a uniform traction
 /// \p traction (Pa) on face \p face: f = ∫ Nᵀ t dA (2×2 Gauss).
-void hex8_face_traction(const double x[8][3], int face, const double traction[3], double forces[12]);
+void hex8_face_traction(const double x[8][3], int face, const double traction[3],
+                        double forces[12]);
 
 /// Like hex8_face_traction() for a pressure \p pressure (Pa) pushing against the outward normal
 /// (t = −p n, with n evaluated at each Gauss point so curved faces are handled).

@@ -46,8 +46,7 @@ void MaterialTable::require_solid_blocks(const Mesh& mesh, const std::string& de
                                          const std::string& path) const {
   for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
     if (mesh.blocks[b].type == ElementType::hex8 && assignment_[b] < 0) {
-      throw_input_error(deck, path,
-                        "element block '" + mesh.blocks[b].name + "' has no material",
+      throw_input_error(deck, path, "element block '" + mesh.blocks[b].name + "' has no material",
                         "list it under Blocks of one of the Materials");
     }
   }

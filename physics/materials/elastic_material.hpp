@@ -16,10 +16,10 @@ namespace railfe {
 
 /// An isotropic linear elastic material.
 struct ElasticMaterial {
-  std::string name;      ///< the name of its sublist in Materials
-  double young = 0;      ///< Young's modulus E (Pa)
-  double poisson = 0;    ///< Poisson's ratio ν
-  double density = 0;    ///< mass density ρ (kg/m³)
+  std::string name;    ///< the name of its sublist in Materials
+  double young = 0;    ///< Young's modulus E (Pa)
+  double poisson = 0;  ///< Poisson's ratio ν
+  double density = 0;  ///< mass density ρ (kg/m³)
   /// λ and μ.
   LameConstants lame() const { return lame_constants(young, poisson); }
 };

@@ -24,8 +24,9 @@ void StaticsStep::check(StepContext& context) {
   conditions_ = read_solid_conditions(*parameters_, deck, context.path);
   check_solid_conditions(conditions_, mesh, deck, context.path);
   if (!context.model.has_section("Materials")) {
-    throw_input_error(deck, "Materials", "missing: the statics step '" + context.step_name +
-                                             "' needs a material for every solid block",
+    throw_input_error(deck, "Materials",
+                      "missing: the statics step '" + context.step_name +
+                          "' needs a material for every solid block",
                       "a Materials section");
   }
   materials_.emplace(context.model.section("Materials"), mesh, deck);
@@ -54,14 +55,21 @@ void StaticsStep::run(StepContext& context) {
   const std::string section = "Step " + context.step_name + " (statics)";
   RunSummary& summary = context.summary;
 
+  // Each phase starts together on every rank, so its time is its own work, not waiting for a
+  // slower rank to finish the previous one.
   Stopwatch clock;
+  auto start_phase = [&] {
+    comm.barrier();
+    clock.restart();
+  };
+  start_phase();
   FeMatrix stiffness(dofs);
   const double graph_seconds = clock.seconds();
-  clock.restart();
+  start_phase();
   assemble_elastic_stiffness(stiffness, *materials_);
   const double assembly_seconds = clock.seconds();
 
-  clock.restart();
+  start_phase();
   auto forces = Teuchos::rcp(new TpetraVector(dofs.owned_map()));
   assemble_solid_loads(conditions_, *materials_, dofs, *forces);
   double applied[3];
@@ -69,7 +77,8 @@ void StaticsStep::run(StepContext& context) {
     const auto f = forces->getData();
     for (int d = 0; d < 3; ++d) {
       double sum = 0;
-      for (LocalIndex i = d; i < dofs.n_owned_dofs(); i += 3) sum += f[i];
+      for (LocalIndex i = d; i < dofs.n_owned_dofs(); i += 3)
+        sum += f[i];
       applied[d] = comm.sum(sum);
     }
   }
@@ -81,6 +90,7 @@ void StaticsStep::run(StepContext& context) {
 
   const auto solver = create_linear_solver(parameters_->sublist("Linear solver"));
   auto u = Teuchos::rcp(new TpetraVector(dofs.owned_map()));
+  comm.barrier();
   solver->setup(system, elasticity_traits(dofs));
   const SolveReport report = solver->solve(*forces, *u);
   constraints.recover(*u);
@@ -93,7 +103,8 @@ void StaticsStep::run(StepContext& context) {
     const auto r = reactions.getData();
     for (int d = 0; d < 3; ++d) {
       double sum = 0;
-      for (LocalIndex i = d; i < dofs.n_owned_dofs(); i += 3) sum += r[i];
+      for (LocalIndex i = d; i < dofs.n_owned_dofs(); i += 3)
+        sum += r[i];
       reaction_sum[d] = comm.sum(sum);
     }
   }
@@ -114,7 +125,7 @@ void StaticsStep::run(StepContext& context) {
   summary.add(section, "relative residual", report.relative_residual);
   summary.add(section, "backward error", report.backward_error);
   summary.add(section, "strain energy", strain_energy, "J");
-  summary.add(section, "equilibrium error |applied + reactions| / max", 
+  summary.add(section, "equilibrium error |applied + reactions| / max",
               scale > 0 ? std::sqrt(imbalance) / scale : 0.0);
   summary.add(section, "time: sparsity graph", graph_seconds, "s");
   summary.add(section, "time: stiffness assembly", assembly_seconds, "s");
@@ -124,7 +135,7 @@ void StaticsStep::run(StepContext& context) {
   summary.add(section, "time: solver setup", report.setup_seconds, "s");
   summary.add(section, "time: solve", report.solve_seconds, "s");
 
-  clock.restart();
+  start_phase();
   write_results(context, dofs, *u, reactions);
   summary.add(section, "time: output", clock.seconds(), "s");
   model.set_field("displacement", u);
@@ -149,13 +160,16 @@ void StaticsStep::write_results(StepContext& context, const DofMap& dofs, const 
     long long count = 0;
     for (GlobalIndex node : mesh.node_set(probe.node_set, "", "").nodes) {
       const LocalIndex local = partition.local_node(node);
-      if (local < 0 || local >= n_owned) continue;
+      if (local < 0 || local >= n_owned)
+        continue;
       ++count;
-      for (int d = 0; d < 3; ++d) sum[d] += u_data[3 * local + d];
+      for (int d = 0; d < 3; ++d)
+        sum[d] += u_data[3 * local + d];
     }
     const double total = static_cast<double>(comm.sum(count));
     std::vector<std::string> row{probe.name, std::to_string(static_cast<long long>(total))};
-    for (int d = 0; d < 3; ++d) row.push_back(CsvWriter::format(comm.sum(sum[d]) / total));
+    for (int d = 0; d < 3; ++d)
+      row.push_back(CsvWriter::format(comm.sum(sum[d]) / total));
     probes.write_row(row);
   }
 
@@ -165,15 +179,19 @@ void StaticsStep::write_results(StepContext& context, const DofMap& dofs, const 
     double sum[3] = {0, 0, 0};
     for (GlobalIndex node : mesh.node_set(condition.node_set, "", "").nodes) {
       const LocalIndex local = partition.local_node(node);
-      if (local < 0 || local >= n_owned) continue;
-      for (int d = 0; d < 3; ++d) sum[d] += r_data[3 * local + d];
+      if (local < 0 || local >= n_owned)
+        continue;
+      for (int d = 0; d < 3; ++d)
+        sum[d] += r_data[3 * local + d];
     }
     std::vector<std::string> row{condition.name, condition.node_set};
-    for (int d = 0; d < 3; ++d) row.push_back(CsvWriter::format(comm.sum(sum[d])));
+    for (int d = 0; d < 3; ++d)
+      row.push_back(CsvWriter::format(comm.sum(sum[d])));
     reaction_file.write_row(row);
   }
 
-  if (!context.model.deck().parameters->sublist("Output").get<bool>("Exodus")) return;
+  if (!context.model.deck().parameters->sublist("Output").get<bool>("Exodus"))
+    return;
   TpetraVector u_overlap(dofs.overlap_map());
   dofs.owned_to_overlap(u, u_overlap);
   const auto stresses = element_stresses(partition, *materials_, u_overlap.getData().getRawPtr());
@@ -182,10 +200,9 @@ void StaticsStep::write_results(StepContext& context, const DofMap& dofs, const 
   for (std::size_t e = 0; e < stresses.size() / 6; ++e) {
     const double* s = &stresses[6 * e];
     element_values.insert(element_values.end(), s, s + 6);
-    const double von_mises =
-        std::sqrt(0.5 * (std::pow(s[0] - s[1], 2) + std::pow(s[1] - s[2], 2) +
-                         std::pow(s[2] - s[0], 2)) +
-                  3 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
+    const double von_mises = std::sqrt(
+        0.5 * (std::pow(s[0] - s[1], 2) + std::pow(s[1] - s[2], 2) + std::pow(s[2] - s[0], 2)) +
+        3 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
     element_values.push_back(von_mises);
   }
   std::vector<double> owned_u(u_data.begin(), u_data.begin() + 3 * n_owned);
@@ -195,13 +212,13 @@ void StaticsStep::write_results(StepContext& context, const DofMap& dofs, const 
   nodal.insert(nodal.end(), nodal_reactions.begin(), nodal_reactions.end());
   const auto element = gather_element_field(partition, element_values, 7);
 
-  ExodusWriter writer(context.output.staging_path(name + ".exo"), mesh,
-                      context.model.deck().parameters->get<std::string>("Title"),
-                      {"displacement_x", "displacement_y", "displacement_z", "reaction_x",
-                       "reaction_y", "reaction_z"},
-                      {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz",
-                       "stress_xz", "von_mises"},
-                      root);
+  ExodusWriter writer(
+      context.output.staging_path(name + ".exo"), mesh,
+      context.model.deck().parameters->get<std::string>("Title"),
+      {"displacement_x", "displacement_y", "displacement_z", "reaction_x", "reaction_y",
+       "reaction_z"},
+      {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_xz", "von_mises"},
+      root);
   writer.write_step(1.0, nodal, element);
   writer.close();
 }

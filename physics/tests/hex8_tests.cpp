@@ -14,9 +14,9 @@ namespace {
 
 // A distorted element (all corner Jacobians positive).
 void distorted(double x[8][3]) {
-  const double perturbation[8][3] = {{0.1, -0.05, 0.02}, {-0.08, 0.03, 0.1}, {0.05, 0.07, -0.04},
-                                     {0.02, -0.06, 0.05}, {-0.04, 0.05, -0.03}, {0.06, 0.02, 0.04},
-                                     {-0.02, -0.08, 0.06}, {0.03, 0.04, -0.07}};
+  const double perturbation[8][3] = {
+      {0.1, -0.05, 0.02},   {-0.08, 0.03, 0.1}, {0.05, 0.07, -0.04},  {0.02, -0.06, 0.05},
+      {-0.04, 0.05, -0.03}, {0.06, 0.02, 0.04}, {-0.02, -0.08, 0.06}, {0.03, 0.04, -0.07}};
   for (int a = 0; a < 8; ++a) {
     for (int d = 0; d < 3; ++d) {
       x[a][d] = (kHex8NodeReference[a][d] + 1) / 2 * (d == 0 ? 2.0 : 1.0) + perturbation[a][d];
@@ -39,7 +39,8 @@ Matrix24 reference_stiffness(const double x[8][3], double young, double poisson)
   const double lambda = young * poisson / ((1 + poisson) * (1 - 2 * poisson));
   const double mu = young / (2 * (1 + poisson));
   for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) D(i, j) = lambda;
+    for (int j = 0; j < 3; ++j)
+      D(i, j) = lambda;
     D(i, i) += 2 * mu;
     D(i + 3, i + 3) = mu;
   }
@@ -55,7 +56,8 @@ Matrix24 reference_stiffness(const double x[8][3], double young, double poisson)
       dN_ref(2, a) = (1 + s[0] * xi[0]) * (1 + s[1] * xi[1]) * s[2] / 8;
     }
     Eigen::Matrix<double, 8, 3> X;
-    for (int a = 0; a < 8; ++a) X.row(a) << x[a][0], x[a][1], x[a][2];
+    for (int a = 0; a < 8; ++a)
+      X.row(a) << x[a][0], x[a][1], x[a][2];
     const Eigen::Matrix3d J = dN_ref * X;  // J(k, d) = ∂x_d/∂ξ_k
     const Eigen::Matrix<double, 3, 8> dN = J.inverse() * dN_ref;
     Eigen::Matrix<double, 6, 24> B = Eigen::Matrix<double, 6, 24>::Zero();
@@ -63,11 +65,11 @@ Matrix24 reference_stiffness(const double x[8][3], double young, double poisson)
       B(0, 3 * a) = dN(0, a);
       B(1, 3 * a + 1) = dN(1, a);
       B(2, 3 * a + 2) = dN(2, a);
-      B(3, 3 * a) = dN(1, a);      // γ_xy
+      B(3, 3 * a) = dN(1, a);  // γ_xy
       B(3, 3 * a + 1) = dN(0, a);
       B(4, 3 * a + 1) = dN(2, a);  // γ_yz
       B(4, 3 * a + 2) = dN(1, a);
-      B(5, 3 * a) = dN(2, a);      // γ_xz
+      B(5, 3 * a) = dN(2, a);  // γ_xz
       B(5, 3 * a + 2) = dN(0, a);
     }
     K += B.transpose() * D * B * J.determinant();
@@ -109,7 +111,8 @@ TEST(Hex8, SymmetricWithExactlySixRigidBodyModes) {
   const double largest = eigen.eigenvalues().maxCoeff();
   int zero = 0;
   for (int k = 0; k < 24; ++k) {
-    if (std::abs(eigen.eigenvalues()[k]) < 1e-12 * largest) ++zero;
+    if (std::abs(eigen.eigenvalues()[k]) < 1e-12 * largest)
+      ++zero;
     EXPECT_GT(eigen.eigenvalues()[k], -1e-12 * largest);
   }
   EXPECT_EQ(zero, 6);
@@ -132,9 +135,12 @@ TEST(Hex8, LinearFieldGivesExactStress) {
   const double trace = G[0][0] + G[1][1] + G[2][2];
   const double expected[6] = {m.lambda * trace + 2 * m.mu * G[0][0],
                               m.lambda * trace + 2 * m.mu * G[1][1],
-                              m.lambda * trace + 2 * m.mu * G[2][2], m.mu * (G[0][1] + G[1][0]),
-                              m.mu * (G[1][2] + G[2][1]), m.mu * (G[0][2] + G[2][0])};
-  for (int k = 0; k < 6; ++k) EXPECT_NEAR(stress[k], expected[k], 1e-9 * 2000) << k;
+                              m.lambda * trace + 2 * m.mu * G[2][2],
+                              m.mu * (G[0][1] + G[1][0]),
+                              m.mu * (G[1][2] + G[2][1]),
+                              m.mu * (G[0][2] + G[2][0])};
+  for (int k = 0; k < 6; ++k)
+    EXPECT_NEAR(stress[k], expected[k], 1e-9 * 2000) << k;
 }
 
 TEST(Hex8, LoadResultants) {
@@ -146,21 +152,24 @@ TEST(Hex8, LoadResultants) {
   const double volume = hex8_volume(x);
   for (int d = 0; d < 3; ++d) {
     double sum = 0;
-    for (int a = 0; a < 8; ++a) sum += forces[3 * a + d];
+    for (int a = 0; a < 8; ++a)
+      sum += forces[3 * a + d];
     EXPECT_NEAR(sum, body[d] * volume, 1e-13 * std::abs(body[d] * volume) + 1e-15);
   }
   // Unit cube: volume 1, face areas 1, pressure resultant along the outward normal.
   const double cube[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
                              {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
   EXPECT_NEAR(hex8_volume(cube), 1.0, 1e-15);
-  const double outward[6][3] = {{0, -1, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, 0, -1}, {0, 0, 1}};
+  const double outward[6][3] = {{0, -1, 0}, {1, 0, 0},  {0, 1, 0},
+                                {-1, 0, 0}, {0, 0, -1}, {0, 0, 1}};
   for (int face = 0; face < 6; ++face) {
     EXPECT_NEAR(hex8_face_area(cube, face), 1.0, 1e-15);
     double pressure_forces[12];
     hex8_face_pressure(cube, face, 3.0, pressure_forces);
     for (int d = 0; d < 3; ++d) {
       double sum = 0;
-      for (int k = 0; k < 4; ++k) sum += pressure_forces[3 * k + d];
+      for (int k = 0; k < 4; ++k)
+        sum += pressure_forces[3 * k + d];
       EXPECT_NEAR(sum, -3.0 * outward[face][d], 1e-14) << face << " " << d;
     }
   }

@@ -20,13 +20,15 @@ namespace {
 // so a component that is round-off around zero is judged against its siblings, not itself.
 std::string quantity_of(const std::string& name, bool unit_suffix) {
   const auto underscore = name.rfind('_');
-  if (underscore == std::string::npos) return name;
+  if (underscore == std::string::npos)
+    return name;
   return unit_suffix ? name.substr(underscore) : name.substr(0, underscore);
 }
 
 double largest_magnitude(const std::vector<double>& values) {
   double scale = 0;
-  for (double value : values) scale = std::max(scale, std::abs(value));
+  for (double value : values)
+    scale = std::max(scale, std::abs(value));
   return scale;
 }
 
@@ -43,8 +45,8 @@ bool compare_series(const std::vector<double>& a, const std::vector<double>& b, 
   bool ok = true;
   for (std::size_t i = 0; i < a.size(); ++i) {
     const double difference = std::abs(a[i] - b[i]);
-    const double allowed = std::max(tolerance.relative * std::max(std::abs(b[i]), scale),
-                                    tolerance.floor);
+    const double allowed =
+        std::max(tolerance.relative * std::max(std::abs(b[i]), scale), tolerance.floor);
     if (!(difference <= allowed)) {
       ok = false;
       if (!(difference <= worst)) {
@@ -54,8 +56,8 @@ bool compare_series(const std::vector<double>& a, const std::vector<double>& b, 
     }
   }
   if (!ok) {
-    out << "  " << what << ": differs at entry " << where << " (" << a[where] << " vs "
-        << b[where] << ", scale " << scale << ")\n";
+    out << "  " << what << ": differs at entry " << where << " (" << a[where] << " vs " << b[where]
+        << ", scale " << scale << ")\n";
   }
   return ok;
 }
@@ -131,11 +133,13 @@ bool compare_directories(const std::string& reference, const std::string& candid
   bool ok = true;
   int compared = 0;
   std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(reference)) files.push_back(entry.path());
+  for (const auto& entry : fs::directory_iterator(reference))
+    files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   for (const auto& file : files) {
     const std::string extension = file.extension().string();
-    if (extension != ".csv" && extension != ".exo") continue;
+    if (extension != ".csv" && extension != ".exo")
+      continue;
     const fs::path other = fs::path(candidate) / file.filename();
     if (!fs::exists(other)) {
       out << file.filename().string() << ": missing in " << candidate << "\n";

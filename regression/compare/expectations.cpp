@@ -22,10 +22,12 @@ namespace railfe {
 ParameterSpec expectation_parameters() {
   ParameterSpec check("One expected quantity.");
   check.choice("Kind", "reference",
-               {{"reference", "an analytic or external value, with the tolerance the method "
-                              "promises"},
-                {"regression", "a value from an earlier run, with a tight tolerance, guarding "
-                               "against unintended change"}},
+               {{"reference",
+                 "an analytic or external value, with the tolerance the method "
+                 "promises"},
+                {"regression",
+                 "a value from an earlier run, with a tight tolerance, guarding "
+                 "against unintended change"}},
                "What the expected value is.");
   check.text("Source", "", "Where the expected value comes from (formula, paper, program).");
   check.required_text("File", "Result file, relative to the results directory.");
@@ -78,7 +80,8 @@ struct Quantity {
 };
 
 Quantity read_quantity(const Teuchos::ParameterList& check, const std::string& directory) {
-  const std::string path = (std::filesystem::path(directory) / check.get<std::string>("File")).string();
+  const std::string path =
+      (std::filesystem::path(directory) / check.get<std::string>("File")).string();
   Quantity quantity;
   if (!check.get<std::string>("Column").empty()) {
     const CsvTable table = read_csv(path);
@@ -87,9 +90,11 @@ Quantity read_quantity(const Teuchos::ParameterList& check, const std::string& d
     std::optional<std::size_t> row;
     if (!key.empty()) {
       for (std::size_t r = 0; r < table.rows.size(); ++r) {
-        if (table.rows[r][0] == key) row = r;
+        if (table.rows[r][0] == key)
+          row = r;
       }
-      if (!row) throw std::runtime_error("'" + path + "' has no row '" + key + "'");
+      if (!row)
+        throw std::runtime_error("'" + path + "' has no row '" + key + "'");
     } else {
       const int index = check.get<int>("Row index");
       const long resolved = index >= 0 ? index : static_cast<long>(table.rows.size()) + index;
@@ -107,13 +112,15 @@ Quantity read_quantity(const Teuchos::ParameterList& check, const std::string& d
     return quantity;
   }
   const std::string variable = check.get<std::string>("Variable");
-  if (variable.empty()) throw std::runtime_error("give Column (CSV) or Variable (Exodus)");
+  if (variable.empty())
+    throw std::runtime_error("give Column (CSV) or Variable (Exodus)");
   const bool nodal = check.get<std::string>("Entity") == "node";
   ExodusField field = read_exodus_field(path, variable, nodal, check.get<int>("Step"));
   const std::string statistic = check.get<std::string>("Statistic");
   if (statistic == "at") {
     const std::size_t index = static_cast<std::size_t>(check.get<int>("Index")) - 1;
-    if (index >= field.values.size()) throw std::runtime_error("index beyond the field");
+    if (index >= field.values.size())
+      throw std::runtime_error("index beyond the field");
     quantity.values = {field.values[index]};
     quantity.points = {field.points[index]};
     return quantity;
@@ -128,10 +135,12 @@ Quantity read_quantity(const Teuchos::ParameterList& check, const std::string& d
     quantity.values = std::move(field.values);
     quantity.points = std::move(field.points);
   }
-  if (quantity.values.empty()) throw std::runtime_error("the field is empty");
+  if (quantity.values.empty())
+    throw std::runtime_error("the field is empty");
   if (statistic != "all") {
     auto pick = std::max_element(quantity.values.begin(), quantity.values.end());
-    if (statistic == "min") pick = std::min_element(quantity.values.begin(), quantity.values.end());
+    if (statistic == "min")
+      pick = std::min_element(quantity.values.begin(), quantity.values.end());
     if (statistic == "max_abs") {
       pick = std::max_element(quantity.values.begin(), quantity.values.end(),
                               [](double a, double b) { return std::abs(a) < std::abs(b); });
@@ -155,11 +164,13 @@ CheckOutcome evaluate(const std::string& name, const Teuchos::ParameterList& che
     throw_input_error(source, path, "give exactly one of Value and Expression");
   }
   if (outcome.kind == "reference" && check.get<std::string>("Source").empty()) {
-    throw_input_error(source, path + "/Source", "a reference check must say where its value "
-                                                "comes from");
+    throw_input_error(source, path + "/Source",
+                      "a reference check must say where its value "
+                      "comes from");
   }
   std::optional<Expression> expression;
-  if (!text.empty()) expression.emplace(text, source, path + "/Expression");
+  if (!text.empty())
+    expression.emplace(text, source, path + "/Expression");
   const double relative = check.get<double>("Relative tolerance");
   const double floor = check.get<double>("Absolute floor");
   try {
@@ -171,8 +182,8 @@ CheckOutcome evaluate(const std::string& name, const Teuchos::ParameterList& che
       const double difference = std::abs(quantity.values[k] - expected);
       const double allowed = std::max(relative * std::abs(expected), floor);
       const double ratio = !std::isfinite(difference) ? 1e300
-                           : allowed > 0                 ? difference / allowed
-                           : (difference > 0 ? 1e300 : 0.0);
+                           : allowed > 0              ? difference / allowed
+                                                      : (difference > 0 ? 1e300 : 0.0);
       if (ratio > worst_ratio) {
         worst_ratio = ratio;
         outcome.computed = quantity.values[k];
@@ -195,14 +206,16 @@ std::vector<CheckOutcome> evaluate_expectations(const std::string& expected_file
                                                 std::string* requirement) {
   Deck deck = read_deck(expected_file, Communicator(MPI_COMM_SELF));
   validate_and_complete(*deck.parameters, *expectation_parameters().list(), deck.source, "");
-  if (requirement) *requirement = deck.parameters->get<std::string>("Requirement");
+  if (requirement)
+    *requirement = deck.parameters->get<std::string>("Requirement");
   const auto& checks = deck.parameters->sublist("Checks");
-  if (checks.numParams() == 0) throw_input_error(deck.source, "Checks", "has no checks");
+  if (checks.numParams() == 0)
+    throw_input_error(deck.source, "Checks", "has no checks");
   std::vector<CheckOutcome> outcomes;
   for (auto it = checks.begin(); it != checks.end(); ++it) {
     const std::string name = checks.name(it);
-    outcomes.push_back(evaluate(name, checks.sublist(name), results_directory, deck.source,
-                                "Checks/" + name));
+    outcomes.push_back(
+        evaluate(name, checks.sublist(name), results_directory, deck.source, "Checks/" + name));
   }
   return outcomes;
 }

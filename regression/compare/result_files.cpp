@@ -15,10 +15,12 @@ namespace railfe {
 
 std::size_t CsvTable::column(const std::string& name) const {
   for (std::size_t i = 0; i < columns.size(); ++i) {
-    if (columns[i] == name) return i;
+    if (columns[i] == name)
+      return i;
   }
   std::string known;
-  for (const auto& column : columns) known += " " + column;
+  for (const auto& column : columns)
+    known += " " + column;
   throw std::runtime_error("no column '" + name + "'; columns:" + known);
 }
 
@@ -28,8 +30,10 @@ std::vector<std::string> split(const std::string& line) {
   std::vector<std::string> cells;
   std::stringstream stream(line);
   std::string cell;
-  while (std::getline(stream, cell, ',')) cells.push_back(cell);
-  if (!line.empty() && line.back() == ',') cells.emplace_back();
+  while (std::getline(stream, cell, ','))
+    cells.push_back(cell);
+  if (!line.empty() && line.back() == ',')
+    cells.emplace_back();
   return cells;
 }
 
@@ -37,18 +41,20 @@ std::vector<std::string> split(const std::string& line) {
 
 CsvTable read_csv(const std::string& path) {
   std::ifstream file(path);
-  if (!file) throw std::runtime_error("cannot read '" + path + "'");
+  if (!file)
+    throw std::runtime_error("cannot read '" + path + "'");
   CsvTable table;
   std::string line;
-  if (!std::getline(file, line)) throw std::runtime_error("'" + path + "' is empty");
+  if (!std::getline(file, line))
+    throw std::runtime_error("'" + path + "' is empty");
   table.columns = split(line);
   while (std::getline(file, line)) {
-    if (line.empty()) continue;
+    if (line.empty())
+      continue;
     auto cells = split(line);
     if (cells.size() != table.columns.size()) {
       throw std::runtime_error("'" + path + "' has a row of " + std::to_string(cells.size()) +
-                               " cells under " + std::to_string(table.columns.size()) +
-                               " columns");
+                               " cells under " + std::to_string(table.columns.size()) + " columns");
     }
     table.rows.push_back(std::move(cells));
   }
@@ -56,7 +62,8 @@ CsvTable read_csv(const std::string& path) {
 }
 
 bool parse_number(const std::string& cell, double& value) {
-  if (cell.empty()) return false;
+  if (cell.empty())
+    return false;
   char* end = nullptr;
   value = std::strtod(cell.c_str(), &end);
   return end != cell.c_str() && *end == '\0';
@@ -95,7 +102,8 @@ ExodusField read_exodus_field(const std::string& path, const std::string& name, 
   const auto found = std::find(names.begin(), names.end(), name);
   if (found == names.end()) {
     std::string known;
-    for (const auto& n : names) known += " " + n;
+    for (const auto& n : names)
+      known += " " + n;
     throw std::runtime_error("'" + path + "' has no " + (nodal ? "nodal" : "element") +
                              " variable '" + name + "'; it has:" + known);
   }
@@ -109,10 +117,11 @@ ExodusField read_exodus_field(const std::string& path, const std::string& name, 
   ExodusField field;
   if (nodal) {
     field.values.resize(mesh.n_nodes());
-    file.check(ex_get_var(file.id(), time_step, EX_NODAL, index, 1, mesh.n_nodes(),
-                          field.values.data()),
-               "reading " + name);
-    for (GlobalIndex n = 0; n < mesh.n_nodes(); ++n) field.points.push_back(mesh.node(n));
+    file.check(
+        ex_get_var(file.id(), time_step, EX_NODAL, index, 1, mesh.n_nodes(), field.values.data()),
+        "reading " + name);
+    for (GlobalIndex n = 0; n < mesh.n_nodes(); ++n)
+      field.points.push_back(mesh.node(n));
     return field;
   }
   std::vector<int64_t> block_ids(mesh.blocks.size());
@@ -131,7 +140,8 @@ ExodusField read_exodus_field(const std::string& path, const std::string& name, 
       const int count = block.n_element_nodes(e);
       for (int a = 0; a < count; ++a) {
         const auto node = mesh.node(block.element_nodes(e)[a]);
-        for (int d = 0; d < 3; ++d) centre[d] += node[d] / count;
+        for (int d = 0; d < 3; ++d)
+          centre[d] += node[d] / count;
       }
       field.points.push_back(centre);
     }

@@ -25,15 +25,15 @@ bool parse_number(const std::string& cell, double& value);
 
 /// One field of an Exodus results file at one output time.
 struct ExodusField {
-  std::vector<double> values;                  ///< one per node or element (global order)
-  std::vector<std::array<double, 3>> points;   ///< node coordinates or element centroids
+  std::vector<double> values;                 ///< one per node or element (global order)
+  std::vector<std::array<double, 3>> points;  ///< node coordinates or element centroids
 };
 
 /// What an Exodus results file holds.
 struct ExodusContents {
   std::vector<std::string> nodal_variables;    ///< names of nodal variables
   std::vector<std::string> element_variables;  ///< names of element variables
-  int n_steps = 0;                              ///< number of output times
+  int n_steps = 0;                             ///< number of output times
 };
 
 /// Lists the variables and output times of \p path.

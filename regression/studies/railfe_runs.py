@@ -1,0 +1,97 @@
+"""Helpers shared by the study and benchmark scripts: run railfe on a generated deck and read what
+it wrote (summary.json, CSV files). Uses only the Python standard library."""
+import csv
+import json
+import os
+import subprocess
+
+
+def box_statics_deck(lengths, elements, clamp, load_set, load, solver=None, gravity=None,
+                     probe=None, exodus=False):
+    """A statics deck for a steel box (E 210 GPa, nu 0.3): `clamp` fully fixed, `load` = (kind,
+    values) on side set `load_set` with kind 'Total force' or 'Pressure', optional Linear solver
+    parameters {name: value}, gravity vector, a probe on node set `probe`."""
+    def array(values):
+        return "{" + ", ".join(str(v) for v in values) + "}"
+    solver_xml = "".join(
+        f'<Parameter name="{name}" type="{"int" if isinstance(value, int) else "string"}" '
+        f'value="{value}"/>' for name, value in (solver or {}).items())
+    gravity_xml = (f'<Parameter name="Gravity" type="Array(double)" value="{array(gravity)}"/>'
+                   if gravity else "")
+    probe_xml = (f'<ParameterList name="Probes"><ParameterList name="{probe}">'
+                 f'<Parameter name="Node set" type="string" value="{probe}"/>'
+                 f'</ParameterList></ParameterList>' if probe else "")
+    kind, values = load
+    return f"""<ParameterList name="railfe">
+  <ParameterList name="Mesh">
+    <Parameter name="Type" type="string" value="box"/>
+    <ParameterList name="Box">
+      <Parameter name="Lengths" type="Array(double)" value="{array(lengths)}"/>
+      <Parameter name="Elements" type="Array(int)" value="{array(elements)}"/>
+    </ParameterList>
+  </ParameterList>
+  <ParameterList name="Materials">
+    <ParameterList name="steel">
+      <Parameter name="Young's modulus" type="double" value="210e9"/>
+      <Parameter name="Poisson's ratio" type="double" value="0.3"/>
+      <Parameter name="Density" type="double" value="7850"/>
+      <Parameter name="Blocks" type="Array(string)" value="{{block_1}}"/>
+    </ParameterList>
+  </ParameterList>
+  <ParameterList name="Output">
+    <Parameter name="Exodus" type="bool" value="{'true' if exodus else 'false'}"/>
+  </ParameterList>
+  <ParameterList name="Steps">
+    <ParameterList name="load">
+      <Parameter name="Module" type="string" value="statics"/>
+      {gravity_xml}
+      <ParameterList name="Displacements">
+        <ParameterList name="clamp"><Parameter name="Node set" type="string" value="{clamp}"/></ParameterList>
+      </ParameterList>
+      <ParameterList name="Surface loads">
+        <ParameterList name="load"><Parameter name="Side set" type="string" value="{load_set}"/>
+          <Parameter name="{kind}" type="Array(double)" value="{array(values)}"/></ParameterList>
+      </ParameterList>
+      {probe_xml}
+      <ParameterList name="Linear solver">{solver_xml}</ParameterList>
+    </ParameterList>
+  </ParameterList>
+</ParameterList>
+"""
+
+
+def mpi_prefix(ranks):
+    """The command prefix that starts `ranks` processes (as the test suite does)."""
+    prefix = ["mpirun", "-np", str(ranks), "--oversubscribe", "--bind-to", "none"]
+    if os.geteuid() == 0:
+        prefix.insert(1, "--allow-run-as-root")
+    return prefix
+
+
+def run_deck(railfe, deck_text, workdir, name, ranks=1):
+    """Writes deck_text to workdir/name.xml, runs it, returns (results dir, summary dict)."""
+    os.makedirs(workdir, exist_ok=True)
+    deck = os.path.join(workdir, name + ".xml")
+    with open(deck, "w") as out:
+        out.write(deck_text)
+    results = os.path.join(workdir, name + "_results")
+    command = mpi_prefix(ranks) + [railfe, deck, "--output", results, "--quiet"]
+    completed = subprocess.run(command, capture_output=True, text=True)
+    if completed.returncode != 0:
+        raise RuntimeError(f"railfe failed on {deck}:\n{completed.stderr}")
+    with open(os.path.join(results, "summary.json")) as summary:
+        return results, json.load(summary)
+
+
+def csv_rows(path):
+    """Rows of a CSV file as dictionaries keyed by the header."""
+    with open(path) as table:
+        return list(csv.DictReader(table))
+
+
+def step_section(summary, step):
+    """The summary section of step `step` (its key starts with 'Step <name>')."""
+    for key, value in summary.items():
+        if key.startswith("Step " + step + " "):
+            return value
+    raise KeyError(step)
