@@ -18,6 +18,7 @@
 #include "framework/app/model.hpp"
 #include "framework/deck/parameter_spec.hpp"
 #include "framework/output/output_directory.hpp"
+#include "framework/output/progress.hpp"
 #include "framework/output/run_summary.hpp"
 
 namespace railfe {
@@ -31,8 +32,14 @@ struct StepContext {
   OutputDirectory& output;                   ///< where files go (write to staging paths)
   RunSummary& summary;                       ///< what to report at the end
   bool quiet;                                ///< suppress progress lines
+  double progress_interval;                  ///< seconds between progress lines
   /// The deck's file name, for messages.
   const std::string& source() const { return model.deck().source; }
+  /// A progress reporter for a phase of \p total work units, printed by rank 0 as
+  /// "[<step>: <label>] 42% done ..." (nothing when quiet).
+  Progress progress(const std::string& label, double total) const {
+    return Progress(step_name + ": " + label, total, model.comm(), quiet, progress_interval);
+  }
 };
 
 /// One step of an analysis.

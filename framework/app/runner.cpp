@@ -67,6 +67,8 @@ int run(const RunOptions& options, const ModuleRegistry& registry, const Communi
   const double mesh_seconds = phase.seconds();
 
   const bool quiet = options.quiet;
+  const double progress_interval =
+      model.deck().parameters->sublist("Output").get<double>("Progress interval");
   std::vector<PreparedStep> steps;
   auto& step_lists = model.deck().parameters->sublist("Steps");
   for (auto it = step_lists.begin(); it != step_lists.end(); ++it) {
@@ -81,7 +83,7 @@ int run(const RunOptions& options, const ModuleRegistry& registry, const Communi
   {
     for (auto& prepared : steps) {
       StepContext context{model,   prepared.name, prepared.path, *prepared.parameters,
-                          *output, summary,       quiet};
+                          *output, summary,       quiet,         progress_interval};
       comm.run_collectively([&] { prepared.step->check(context); });
     }
   }
@@ -112,7 +114,7 @@ int run(const RunOptions& options, const ModuleRegistry& registry, const Communi
     }
     phase.restart();
     StepContext context{model,   prepared.name, prepared.path, *prepared.parameters,
-                        *output, summary,       quiet};
+                        *output, summary,       quiet,         progress_interval};
     prepared.step->run(context);
     summary.add("Wall time", "step " + prepared.name, phase.seconds(), "s");
   }

@@ -25,7 +25,7 @@ void element_coordinates(const MeshPartition& partition, const LocalBlock& block
   }
 }
 
-void assemble_elastic_stiffness(FeMatrix& K, const MaterialTable& materials) {
+void assemble_elastic_stiffness(FeMatrix& K, const MaterialTable& materials, Progress* progress) {
   const MeshPartition& partition = K.dofs().partition();
   alignas(64) double element_matrix[24 * 24];
   double x[8][3];
@@ -40,6 +40,8 @@ void assemble_elastic_stiffness(FeMatrix& K, const MaterialTable& materials) {
       element_coordinates(partition, block, e, x);
       hex8_stiffness(x, lame, element_matrix);
       K.add_element(first + e, element_matrix);
+      if (progress != nullptr && (e & 8191) == 0)
+        progress->update(first + e);
     }
   }
   K.end_assembly();

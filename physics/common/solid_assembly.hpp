@@ -10,6 +10,7 @@
 #include "framework/assembly/dof_map.hpp"
 #include "framework/assembly/fe_matrix.hpp"
 #include "framework/assembly/linear_constraints.hpp"
+#include "framework/output/progress.hpp"
 #include "framework/solvers/linear_solver.hpp"
 #include "physics/common/solid_conditions.hpp"
 #include "physics/materials/elastic_material.hpp"
@@ -20,8 +21,10 @@ namespace railfe {
 void element_coordinates(const MeshPartition& partition, const LocalBlock& block,
                          LocalIndex element, double x[8][3]);
 
-/// Assembles the stiffness of every local hex8 element into \p K (collective).
-void assemble_elastic_stiffness(FeMatrix& K, const MaterialTable& materials);
+/// Assembles the stiffness of every local hex8 element into \p K (collective), reporting to
+/// \p progress (in local elements) if given.
+void assemble_elastic_stiffness(FeMatrix& K, const MaterialTable& materials,
+                                Progress* progress = nullptr);
 
 /// Adds gravity, surface loads and nodal forces into \p forces over the owned DOFs of \p dofs,
 /// which is overwritten (collective).
@@ -40,7 +43,7 @@ void add_solid_constraints(
     const std::vector<std::vector<std::pair<GlobalIndex, GlobalIndex>>>& ties, const DofMap& dofs,
     LinearConstraints& constraints);
 
-/// Centre stresses (6 per element: xx, yy, zz, xy, yz, xz) of the local hex8 elements in
+/// Centre stresses (6 per element: xx, yy, zz, xy, yz, zx) of the local hex8 elements in
 /// partition order, from displacements \p u_overlap over the overlapping DOFs; other element
 /// types get zeros.
 std::vector<double> element_stresses(const MeshPartition& partition, const MaterialTable& materials,

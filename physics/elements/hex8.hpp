@@ -27,8 +27,9 @@ void hex8_body_force(const double x[8][3], const double b[3], double* forces);
 /// Volume of the element (m³).
 double hex8_volume(const double x[8][3]);
 
-/// Stress at the element centre (Pa, order xx, yy, zz, xy, yz, xz) from nodal displacements
-/// \p u (24). Exact when the displacement field is linear (the patch test).
+/// Stress at the element centre (Pa, order xx, yy, zz, xy, yz, zx: the Exodus/ParaView
+/// symmetric-tensor order) from nodal displacements \p u (24). Exact when the displacement field is
+/// linear (the patch test).
 void hex8_centre_stress(const double x[8][3], const double* u, const LameConstants& material,
                         double stress[6]);
 

@@ -66,7 +66,10 @@ void StaticsStep::run(StepContext& context) {
   FeMatrix stiffness(dofs);
   const double graph_seconds = clock.seconds();
   start_phase();
-  assemble_elastic_stiffness(stiffness, *materials_);
+  Progress assembly_progress =
+      context.progress("stiffness assembly", dofs.partition().n_local_elements());
+  assemble_elastic_stiffness(stiffness, *materials_, &assembly_progress);
+  assembly_progress.finish();
   const double assembly_seconds = clock.seconds();
 
   start_phase();
@@ -91,8 +94,10 @@ void StaticsStep::run(StepContext& context) {
   const auto solver = create_linear_solver(parameters_->sublist("Linear solver"));
   auto u = Teuchos::rcp(new TpetraVector(dofs.owned_map()));
   comm.barrier();
+  Progress solve_progress = context.progress("linear solve", 1);
   solver->setup(system, elasticity_traits(dofs));
   const SolveReport report = solver->solve(*forces, *u);
+  solve_progress.finish();
   constraints.recover(*u);
   TpetraVector reactions(dofs.owned_map());
   constraints.reactions(*u, reactions);
@@ -217,7 +222,7 @@ void StaticsStep::write_results(StepContext& context, const DofMap& dofs, const 
       context.model.deck().parameters->get<std::string>("Title"),
       {"displacement_x", "displacement_y", "displacement_z", "reaction_x", "reaction_y",
        "reaction_z"},
-      {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_xz", "von_mises"},
+      {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_zx", "von_mises"},
       root);
   writer.write_step(1.0, nodal, element);
   writer.close();
