@@ -20,7 +20,7 @@ std::string default_text(const Teuchos::ParameterEntry& entry, const ParameterRu
   std::ostringstream out;
   auto join = [&out](const auto& values) {
     out << "{";
-    for (std::size_t i = 0; i < values.size(); ++i)
+    for (decltype(values.size()) i = 0; i < values.size(); ++i)
       out << (i ? ", " : "") << values[i];
     out << "}";
   };

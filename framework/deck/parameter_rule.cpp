@@ -130,7 +130,7 @@ std::string check_array(const Teuchos::Array<T>& values, int required_size, cons
   if (required_size > 0 && static_cast<int>(values.size()) != required_size) {
     return "has " + std::to_string(values.size()) + " entries";
   }
-  for (std::size_t i = 0; i < values.size(); ++i) {
+  for (decltype(values.size()) i = 0; i < values.size(); ++i) {
     if (!range.contains(static_cast<double>(values[i]))) {
       return "entry " + std::to_string(i + 1) + " is " + number_text(values[i]);
     }

@@ -113,6 +113,19 @@ TEST(FeMatrix, EqualsTheDenseSumOfElementMatrices) {
   EXPECT_EQ(f.comm.sum(static_cast<long long>(rows_checked)), 3 * f.mesh.n_nodes());
 }
 
+// Applies the constraints to K u = forces (K is modified), solves with CHOLMOD and returns u.
+TpetraVector solve_constrained(const Teuchos::RCP<TpetraMatrix>& K, const TpetraVector& forces,
+                               LinearConstraints& constraints) {
+  TpetraVector loads(forces, Teuchos::Copy);
+  auto system = constraints.apply(K, loads);
+  auto solver = make_cholmod_solver(1e-12);
+  solver->setup(system, ProblemTraits{});
+  TpetraVector u(forces.getMap());
+  solver->solve(loads, u);
+  constraints.recover(u);
+  return u;
+}
+
 // u*: a smooth field over global DOFs, used as the exact solution.
 double exact(GlobalIndex dof) {
   return std::sin(0.3 * dof) + 0.1 * (dof % 3);
@@ -143,13 +156,7 @@ TEST(LinearConstraints, PrescribedValuesAreExactAndReactionsBalance) {
   }
   constraints.finalize();
   EXPECT_EQ(constraints.n_prescribed(), static_cast<GlobalIndex>(fixed.size()));
-  TpetraVector loads(forces, Teuchos::Copy);
-  auto system = constraints.apply(K, loads);
-  auto solver = make_cholmod_solver(1e-12);
-  solver->setup(system, ProblemTraits{});
-  TpetraVector u(f.dofs->owned_map());
-  solver->solve(loads, u);
-  constraints.recover(u);
+  const TpetraVector u = solve_constrained(K, forces, constraints);
   TpetraVector reactions(f.dofs->owned_map());
   constraints.reactions(u, reactions);
   const auto u_data = u.getData(), exact_data = u_exact.getData();
@@ -185,13 +192,7 @@ TEST(LinearConstraints, MultipointSolutionIsTheConstrainedMinimum) {
   for (LocalIndex i = 0; i < f.dofs->n_owned_dofs(); ++i) {
     forces.replaceLocalValue(i, std::cos(1.0 + f.dofs->owned_map()->getGlobalElement(i)));
   }
-  TpetraVector loads(forces, Teuchos::Copy);
-  auto system = constraints.apply(K, loads);
-  auto solver = make_cholmod_solver(1e-12);
-  solver->setup(system, ProblemTraits{});
-  TpetraVector u(f.dofs->owned_map());
-  solver->solve(loads, u);
-  constraints.recover(u);
+  const TpetraVector u = solve_constrained(K, forces, constraints);
 
   // Gather u and the residual r = K u - f on rank 0 and check there.
   TpetraVector residual(f.dofs->owned_map());
