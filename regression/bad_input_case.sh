@@ -33,10 +33,14 @@ if [[ $count -ne 1 ]]; then
   failed=1
 fi
 if [[ -d "$output" ]]; then
-  complete=$(find "$output" -type f ! -name '*.part' ! -name 'FAILED.txt' | wc -l)
+  complete=$(find "$output" -type f ! -name '*.part' ! -name 'FAILED.txt' ! -name '.railfe-outputs' | wc -l)
   if [[ $complete -ne 0 ]]; then
     echo "FAIL: complete-looking files were left in $output:"
-    find "$output" -type f ! -name '*.part' ! -name 'FAILED.txt'
+    find "$output" -type f ! -name '*.part' ! -name 'FAILED.txt' ! -name '.railfe-outputs'
+    failed=1
+  fi
+  if [[ $expected_status -eq 1 ]]; then
+    echo "FAIL: bad input must not touch the results directory, but $output exists"
     failed=1
   fi
   if [[ $expected_status -eq 2 && ! -f "$output/FAILED.txt" ]]; then

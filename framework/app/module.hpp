@@ -23,6 +23,15 @@
 
 namespace railfe {
 
+/// What a step may use when it checks itself against the mesh, before anything runs.
+struct CheckContext {
+  const Model& model;            ///< mesh, partition, sections
+  const std::string& step_name;  ///< the name under Steps/
+  const std::string& path;       ///< "Steps/<name>", for messages
+  /// The deck's file name, for messages.
+  const std::string& source() const { return model.deck().source; }
+};
+
 /// What a running step may use.
 struct StepContext {
   Model& model;                              ///< mesh, partition, sections, shared fields
@@ -47,9 +56,10 @@ class AnalysisStep {
  public:
   virtual ~AnalysisStep() = default;
   /// Checks everything that depends on the mesh (set and block names, materials) and throws
-  /// InputError; called for every step before the first one runs, so a bad deck fails in
-  /// seconds. Must give the same verdict on every rank.
-  virtual void check(StepContext& context) = 0;
+  /// InputError; called for every step before the first one runs and before the results
+  /// directory is touched, so a bad deck fails in seconds and writes nothing. Must give the same
+  /// verdict on every rank.
+  virtual void check(const CheckContext& context) = 0;
   /// Runs the step (collective). Throws RunError when the computation fails.
   virtual void run(StepContext& context) = 0;
 };

@@ -78,15 +78,12 @@ int run(const RunOptions& options, const ModuleRegistry& registry, const Communi
     steps.push_back({name, "Steps/" + name, &parameters, module->create(parameters)});
   }
 
+  for (auto& prepared : steps) {
+    const CheckContext context{model, prepared.name, prepared.path};
+    comm.run_collectively([&] { prepared.step->check(context); });
+  }
   // Everything the deck can get wrong is known now; only then is the results directory touched.
   output = std::make_unique<OutputDirectory>(results_directory(options, model.deck()), comm);
-  {
-    for (auto& prepared : steps) {
-      StepContext context{model,   prepared.name, prepared.path, *prepared.parameters,
-                          *output, summary,       quiet,         progress_interval};
-      comm.run_collectively([&] { prepared.step->check(context); });
-    }
-  }
 
   const auto& title = model.deck().parameters->get<std::string>("Title");
   summary.add("Run", "deck", options.deck);

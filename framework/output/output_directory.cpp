@@ -31,10 +31,6 @@ OutputDirectory::OutputDirectory(std::string path, const Communicator& comm)
       }
       fs::remove(fs::path(path_) / kManifest, error);
       fs::remove(fs::path(path_) / "FAILED.txt", error);
-      for (const auto& entry : fs::directory_iterator(path_, error)) {
-        if (entry.path().extension() == ".part")
-          fs::remove(entry.path(), error);
-      }
       std::ofstream probe(fs::path(path_) / ".railfe-write-test");
       if (!probe)
         problem = "output directory '" + path_ + "' is not writable";
@@ -79,6 +75,10 @@ void OutputDirectory::mark_failed(const std::string& message) const {
     return;
   std::ofstream failed(fs::path(path_) / "FAILED.txt");
   failed << "This run failed; files ending in .part are incomplete.\n" << message << "\n";
+  // The next run removes exactly these files, and nothing else that may sit in the directory.
+  std::ofstream manifest(fs::path(path_) / kManifest);
+  for (const auto& name : names_)
+    manifest << name << ".part\n";
 }
 
 }  // namespace railfe

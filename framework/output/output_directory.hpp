@@ -14,8 +14,9 @@ namespace railfe {
 class OutputDirectory {
  public:
   /// Creates \p path if needed (collective) and removes what an earlier run left there: the
-  /// files listed in its manifest, the manifest, FAILED.txt and *.part files. Other files are
-  /// not touched. Throws RunError if the directory cannot be created or written.
+  /// files listed in its manifest (its results, or the .part files of a failed run), the
+  /// manifest and FAILED.txt. Nothing else is touched, so a results directory may be shared
+  /// with other files. Throws RunError if the directory cannot be created or written.
   OutputDirectory(std::string path, const Communicator& comm);
 
   /// The directory.
@@ -26,7 +27,8 @@ class OutputDirectory {
   std::string final_path(const std::string& name) const;
   /// Renames every registered file to its final name and writes the manifest (collective).
   void finalize();
-  /// Records the failure in FAILED.txt; staged files keep their .part names (rank 0 only).
+  /// Records the failure in FAILED.txt; staged files keep their .part names and are listed in
+  /// the manifest for the next run to remove (rank 0 only).
   void mark_failed(const std::string& message) const;
   /// Names registered so far.
   const std::vector<std::string>& names() const { return names_; }

@@ -18,7 +18,7 @@ namespace railfe {
 
 StaticsStep::StaticsStep(const Teuchos::ParameterList& parameters) : parameters_(&parameters) {}
 
-void StaticsStep::check(StepContext& context) {
+void StaticsStep::check(const CheckContext& context) {
   const Mesh& mesh = context.model.mesh();
   const std::string& deck = context.source();
   conditions_ = read_solid_conditions(*parameters_, deck, context.path);

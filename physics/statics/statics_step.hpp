@@ -20,7 +20,7 @@ class StaticsStep : public AnalysisStep {
  public:
   /// A step configured by its validated parameter list.
   explicit StaticsStep(const Teuchos::ParameterList& parameters);
-  void check(StepContext& context) override;
+  void check(const CheckContext& context) override;
   void run(StepContext& context) override;
 
  private:
