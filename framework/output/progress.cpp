@@ -19,9 +19,13 @@ void Progress::update(double done) {
     return;
   last_print_ = elapsed;
   const double fraction = total_ > 0 ? done / total_ : 1.0;
-  const double remaining = fraction > 0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
-  std::printf("[%s] %5.1f%% done, %.1f s elapsed, about %.0f s to go\n", label_.c_str(),
-              100.0 * fraction, elapsed, remaining);
+  if (fraction <= 0) {
+    std::printf("[%s] started, %.1f s elapsed\n", label_.c_str(), elapsed);
+  } else {
+    const double remaining = elapsed * (1.0 - fraction) / fraction;
+    std::printf("[%s] %5.1f%% done, %.1f s elapsed, about %.0f s to go\n", label_.c_str(),
+                100.0 * fraction, elapsed, remaining);
+  }
   std::fflush(stdout);
 }
 

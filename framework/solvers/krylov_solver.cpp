@@ -4,6 +4,8 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "framework/base/error.hpp"
@@ -19,6 +21,46 @@ namespace {
 // A backward error this small means x solves a matrix and right-hand side within a few hundred
 // units of round-off of the given ones.
 constexpr double kRoundOffBackwardError = 1e-14;
+
+// Sits in front of CG's preconditioner, whose input each iteration is the current residual, and
+// reports progress as the share of orders of magnitude the residual has dropped on the way to
+// the target. The norm is a collective, so every rank takes it at the same iterations: the first
+// and every tenth (one dot product per ten iterations); rank 0 prints when a line is due.
+class ProgressPreconditioner : public TpetraOperator {
+ public:
+  ProgressPreconditioner(Teuchos::RCP<TpetraOperator> inner, Teuchos::RCP<const TpetraMap> map,
+                         Progress& progress, double target)
+      : inner_(std::move(inner)), map_(std::move(map)), progress_(progress), target_(target) {}
+
+  Teuchos::RCP<const TpetraMap> getDomainMap() const override { return map_; }
+  Teuchos::RCP<const TpetraMap> getRangeMap() const override { return map_; }
+
+  void apply(const TpetraMultiVector& X, TpetraMultiVector& Y, Teuchos::ETransp mode, double alpha,
+             double beta) const override {
+    if (applications_++ % 10 == 0) {
+      const double norm = X.getVector(0)->norm2();
+      if (initial_ < 0)
+        initial_ = norm;
+      if (initial_ > target_ && norm > 0) {
+        const double reduced = std::log(initial_ / norm) / std::log(initial_ / target_);
+        progress_.update(std::min(1.0, std::max(0.0, reduced)));
+      }
+    }
+    if (inner_.is_null()) {
+      Y.update(alpha, X, beta);
+    } else {
+      inner_->apply(X, Y, mode, alpha, beta);
+    }
+  }
+
+ private:
+  Teuchos::RCP<TpetraOperator> inner_;
+  Teuchos::RCP<const TpetraMap> map_;
+  Progress& progress_;
+  double target_;
+  mutable double initial_ = -1;
+  mutable long applications_ = 0;
+};
 
 class KrylovSolver : public LinearSolver {
  public:
@@ -63,12 +105,15 @@ class KrylovSolver : public LinearSolver {
     auto op = Teuchos::rcp_implicit_cast<const OP>(matrix_);
     auto problem = Teuchos::rcp(new Belos::LinearProblem<double, MV, OP>(op, Teuchos::rcpFromRef(x),
                                                                          Teuchos::rcpFromRef(b)));
-    if (!preconditioner_.is_null()) {
-      if (settings_.method == "cg") {
+    if (settings_.method == "cg") {
+      if (progress_ != nullptr) {
+        problem->setLeftPrec(Teuchos::rcp(new ProgressPreconditioner(
+            preconditioner_, b.getMap(), *progress_, settings_.relative_tolerance * b.norm2())));
+      } else if (!preconditioner_.is_null()) {
         problem->setLeftPrec(preconditioner_);
-      } else {
-        problem->setRightPrec(preconditioner_);
       }
+    } else if (!preconditioner_.is_null()) {
+      problem->setRightPrec(preconditioner_);
     }
     problem->setProblem();
     solver->setProblem(problem);

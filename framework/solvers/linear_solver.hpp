@@ -9,6 +9,7 @@
 
 #include "framework/assembly/tpetra_types.hpp"
 #include "framework/deck/parameter_spec.hpp"
+#include "framework/output/progress.hpp"
 
 namespace railfe {
 
@@ -45,6 +46,12 @@ class LinearSolver {
   /// Solves A x = b, x holding the initial guess for iterative methods (collective). Throws
   /// RunError if the solution does not meet the configured accuracy.
   virtual SolveReport solve(const TpetraVector& b, TpetraVector& x) = 0;
+  /// Reports the progress of later solves to \p progress (may be null; it must outlive the
+  /// solves). Iterative solvers report the share of the residual reduction achieved.
+  void report_progress_to(Progress* progress) { progress_ = progress; }
+
+ protected:
+  Progress* progress_ = nullptr;  ///< where solves report progress, or null
 };
 
 /// The valid parameters of a "Linear solver" sublist.

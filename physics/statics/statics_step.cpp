@@ -94,8 +94,11 @@ void StaticsStep::run(StepContext& context) {
   const auto solver = create_linear_solver(parameters_->sublist("Linear solver"));
   auto u = Teuchos::rcp(new TpetraVector(dofs.owned_map()));
   comm.barrier();
-  Progress solve_progress = context.progress("linear solve", 1);
+  Progress setup_progress = context.progress("solver set-up", 1);
   solver->setup(system, elasticity_traits(dofs));
+  setup_progress.finish();
+  Progress solve_progress = context.progress("linear solve", 1);
+  solver->report_progress_to(&solve_progress);
   const SolveReport report = solver->solve(*forces, *u);
   solve_progress.finish();
   constraints.recover(*u);
