@@ -34,4 +34,12 @@ void DofMap::overlap_to_owned_sum(const TpetraVector& overlap, TpetraVector& own
   owned.doExport(overlap, *importer_, Tpetra::ADD);
 }
 
+std::string describe_dof(GlobalIndex dof, int dofs_per_node) {
+  static const char* kAxes = "xyz";
+  const int component = static_cast<int>(dof % dofs_per_node);
+  const std::string name =
+      dofs_per_node == 3 ? std::string(1, kAxes[component]) : std::to_string(component + 1);
+  return "node " + std::to_string(dof / dofs_per_node + 1) + " component " + name;
+}
+
 }  // namespace railfe

@@ -4,6 +4,8 @@
 /// dofs_per_node × global node + component, so MueLu sees node blocks and the owned map is a
 /// prefix of the overlapping one.
 
+#include <string>
+
 #include "framework/assembly/tpetra_types.hpp"
 #include "framework/mesh/partition.hpp"
 
@@ -48,5 +50,9 @@ class DofMap {
   Teuchos::RCP<const TpetraMap> overlap_map_;
   Teuchos::RCP<const TpetraImport> importer_;
 };
+
+/// "node N component c" for global DOF \p dof with \p dofs_per_node unknowns per node (node
+/// 1-based, as ParaView shows it; components x, y, z when there are three), for messages.
+std::string describe_dof(GlobalIndex dof, int dofs_per_node);
 
 }  // namespace railfe

@@ -17,15 +17,6 @@ namespace railfe {
 LinearConstraints::LinearConstraints(const DofMap& dofs, std::string source)
     : dofs_(&dofs), source_(std::move(source)) {}
 
-std::string LinearConstraints::dof_name(GlobalIndex dof) const {
-  const int dpn = dofs_->dofs_per_node();
-  static const char* kComponents = "xyz";
-  const int component = static_cast<int>(dof % dpn);
-  const std::string name =
-      dpn == 3 ? std::string(1, kComponents[component]) : std::to_string(component + 1);
-  return "node " + std::to_string(dof / dpn + 1) + " component " + name;
-}
-
 void LinearConstraints::prescribe(GlobalIndex dof, double value) {
   const LocalIndex local = dofs_->owned_map()->getLocalElement(dof);
   if (local == Teuchos::OrdinalTraits<LocalIndex>::invalid())
@@ -40,6 +31,7 @@ void LinearConstraints::add_multipoint(const MultipointConstraint& constraint) {
 
 void LinearConstraints::finalize() {
   const Communicator& comm = dofs_->partition().comm();
+  const int dpn = dofs_->dofs_per_node();
   // The last value given for a DOF wins (conditions later in the deck override earlier ones).
   std::map<LocalIndex, double> unique(prescribed_.begin(), prescribed_.end());
   prescribed_.assign(unique.begin(), unique.end());
@@ -53,7 +45,7 @@ void LinearConstraints::finalize() {
   const auto duplicate = std::adjacent_find(all_slaves.begin(), all_slaves.end());
   if (duplicate != all_slaves.end()) {
     problem = format_input_message(
-        source_, "", dof_name(*duplicate) + " is the slave of two multi-point constraints",
+        source_, "", describe_dof(*duplicate, dpn) + " is the slave of two multi-point constraints",
         "each DOF constrained once");
   }
   const std::set<long long> slaves(all_slaves.begin(), all_slaves.end());
@@ -61,7 +53,7 @@ void LinearConstraints::finalize() {
     for (const auto& [master, coefficient] : constraint.masters) {
       if (problem.empty() && slaves.count(master)) {
         problem = format_input_message(source_, "",
-                                       dof_name(master) +
+                                       describe_dof(master, dpn) +
                                            " is both a master and a slave of "
                                            "multi-point constraints",
                                        "masters that are not themselves constrained");
@@ -73,7 +65,7 @@ void LinearConstraints::finalize() {
     if (problem.empty() && slaves.count(owned.getGlobalElement(local))) {
       problem =
           format_input_message(source_, "",
-                               dof_name(owned.getGlobalElement(local)) +
+                               describe_dof(owned.getGlobalElement(local), dpn) +
                                    " is both prescribed and the slave of a multi-point constraint",
                                "prescribe the master instead");
     }

@@ -51,7 +51,6 @@ class LinearConstraints {
   void reactions(const TpetraVector& u, TpetraVector& r) const;
 
  private:
-  std::string dof_name(GlobalIndex dof) const;
   Teuchos::RCP<TpetraMatrix> eliminate_multipoint(const Teuchos::RCP<TpetraMatrix>& K,
                                                   TpetraVector& f);
   void eliminate_prescribed(TpetraMatrix& K, TpetraVector& f);

@@ -2,6 +2,7 @@
 
 #include <cstring>
 
+#include "framework/assembly/dof_map.hpp"
 #include "framework/solvers/direct_solvers.hpp"
 #include "framework/solvers/root_direct_solver.hpp"
 

@@ -7,6 +7,7 @@
 
 #include "framework/assembly/tpetra_compat.hpp"
 #include "framework/base/error.hpp"
+#include "framework/base/parallel.hpp"
 
 namespace railfe {
 
@@ -15,26 +16,9 @@ GatheredMatrix::GatheredMatrix(const TpetraMatrix& A) {
   on_root_ = comm->getRank() == 0;
   const auto row_map = A.getRowMap();
   const auto owned = row_map->getNodeElementList();
-  // Rank 0 asks for every row; the order of rows on rank 0 is the ranks' order.
-  const int n_ranks = comm->getSize();
-  int count = static_cast<int>(owned.size());
-  std::vector<int> counts(n_ranks), offsets(n_ranks, 0);
-  Teuchos::gatherAll(*comm, 1, &count, n_ranks, counts.data());
-  long total = 0;
-  for (int r = 0; r < n_ranks; ++r) {
-    offsets[r] = static_cast<int>(total);
-    total += counts[r];
-  }
-  std::vector<GlobalIndex> all(on_root_ ? total : 0);
-  std::vector<GlobalIndex> mine(owned.begin(), owned.end());
-  if (n_ranks == 1) {
-    all = mine;
-  } else {
-    // Teuchos has no gatherv; the MPI communicator underneath is used directly.
-    const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(comm.get());
-    MPI_Gatherv(mine.data(), count, MPI_LONG_LONG, all.data(), counts.data(), offsets.data(),
-                MPI_LONG_LONG, 0, *mpi->getRawMpiComm());
-  }
+  // Rank 0 asks for every row, in the ranks' order.
+  const std::vector<long long> mine(owned.begin(), owned.end());
+  const std::vector<GlobalIndex> all = communicator_of(*comm).gather_to_root(mine);
   global_indices_ = all;
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
   root_map_ = Teuchos::rcp(new TpetraMap(
@@ -79,24 +63,15 @@ void GatheredMatrix::scatter(const std::vector<double>& root_values, TpetraVecto
   x.doExport(root, *importer_, Tpetra::INSERT);
 }
 
-void share_root_verdict(const TpetraMatrix& A, const std::string& root_problem) {
-  const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(A.getComm().get());
-  std::string message = root_problem;
-  unsigned long long length = message.size();
-  MPI_Bcast(&length, 1, MPI_UNSIGNED_LONG_LONG, 0, *mpi->getRawMpiComm());
-  message.resize(length);
-  if (length > 0)
-    MPI_Bcast(message.data(), static_cast<int>(length), MPI_CHAR, 0, *mpi->getRawMpiComm());
-  if (length > 0)
-    throw RunError(message);
+Communicator communicator_of(const Teuchos::Comm<int>& comm) {
+  return Communicator(*dynamic_cast<const Teuchos::MpiComm<int>&>(comm).getRawMpiComm());
 }
 
-std::string describe_dof(GlobalIndex dof, int dofs_per_node) {
-  static const char* kAxes = "xyz";
-  const int component = static_cast<int>(dof % dofs_per_node);
-  const std::string name =
-      dofs_per_node == 3 ? std::string(1, kAxes[component]) : std::to_string(component + 1);
-  return "node " + std::to_string(dof / dofs_per_node + 1) + " component " + name;
+void share_root_verdict(const TpetraMatrix& A, const std::string& root_problem) {
+  std::string message = root_problem;
+  communicator_of(*A.getComm()).broadcast(message);
+  if (!message.empty())
+    throw RunError(message);
 }
 
 }  // namespace railfe

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "framework/assembly/tpetra_types.hpp"
+#include "framework/base/parallel.hpp"
 
 namespace railfe {
 
@@ -46,12 +47,11 @@ class GatheredMatrix {
   std::vector<double> values_;
 };
 
+/// The railfe Communicator over the same ranks as a Teuchos (MPI) communicator.
+Communicator communicator_of(const Teuchos::Comm<int>& comm);
+
 /// Rank 0 ran a solver step alone and found \p root_problem ("" if none): every rank throws
 /// RunError with that message, or returns (collective over \p A's communicator).
 void share_root_verdict(const TpetraMatrix& A, const std::string& root_problem);
-
-/// "node N component c" for a global DOF with \p dofs_per_node unknowns per node (1-based node,
-/// components x, y, z for three), for messages.
-std::string describe_dof(GlobalIndex dof, int dofs_per_node);
 
 }  // namespace railfe

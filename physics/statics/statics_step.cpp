@@ -2,6 +2,7 @@
 
 #include <Tpetra_Vector.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -15,6 +16,21 @@
 #include "physics/common/solid_assembly.hpp"
 
 namespace railfe {
+
+namespace {
+
+// Sums of the x, y and z components of a vector over the owned DOFs of all ranks.
+std::array<double, 3> component_sums(const TpetraVector& vector, const Communicator& comm) {
+  std::array<double, 3> sums{0, 0, 0};
+  const auto data = vector.getData();
+  for (decltype(data.size()) i = 0; i < data.size(); ++i)
+    sums[i % 3] += data[i];
+  for (double& sum : sums)
+    sum = comm.sum(sum);
+  return sums;
+}
+
+}  // namespace
 
 StaticsStep::StaticsStep(const Teuchos::ParameterList& parameters) : parameters_(&parameters) {}
 
@@ -75,16 +91,7 @@ void StaticsStep::run(StepContext& context) {
   start_phase();
   auto forces = Teuchos::rcp(new TpetraVector(dofs.owned_map()));
   assemble_solid_loads(conditions_, *materials_, dofs, *forces);
-  double applied[3];
-  {
-    const auto f = forces->getData();
-    for (int d = 0; d < 3; ++d) {
-      double sum = 0;
-      for (LocalIndex i = d; i < dofs.n_owned_dofs(); i += 3)
-        sum += f[i];
-      applied[d] = comm.sum(sum);
-    }
-  }
+  const auto applied = component_sums(*forces, comm);
   TpetraVector original_forces(*forces, Teuchos::Copy);
   LinearConstraints constraints(dofs, context.source());
   add_solid_constraints(conditions_, tie_pairs_, dofs, constraints);
@@ -106,16 +113,7 @@ void StaticsStep::run(StepContext& context) {
   constraints.reactions(*u, reactions);
 
   // Equilibrium: applied loads and reactions must cancel; their work gives the strain energy.
-  double reaction_sum[3];
-  {
-    const auto r = reactions.getData();
-    for (int d = 0; d < 3; ++d) {
-      double sum = 0;
-      for (LocalIndex i = d; i < dofs.n_owned_dofs(); i += 3)
-        sum += r[i];
-      reaction_sum[d] = comm.sum(sum);
-    }
-  }
+  const auto reaction_sum = component_sums(reactions, comm);
   double imbalance = 0, scale = 0;
   for (int d = 0; d < 3; ++d) {
     imbalance += std::pow(applied[d] + reaction_sum[d], 2);

@@ -6,6 +6,7 @@
 #include <map>
 #include <vector>
 
+#include "framework/mesh/mesh_readers.hpp"
 #include "regression/compare/result_files.hpp"
 
 namespace railfe {
@@ -104,6 +105,7 @@ bool compare_exodus(const std::string& a_path, const std::string& b_path,
     out << "  variables or output times differ\n";
     return false;
   }
+  const Mesh a_mesh = read_exodus_mesh(a_path), b_mesh = read_exodus_mesh(b_path);
   bool ok = true;
   for (int step = 1; step <= a.n_steps; ++step) {
     for (bool nodal : {true, false}) {
@@ -111,8 +113,8 @@ bool compare_exodus(const std::string& a_path, const std::string& b_path,
       std::vector<std::vector<double>> x, y;
       std::map<std::string, double> scale;
       for (const auto& name : names) {
-        x.push_back(read_exodus_field(a_path, name, nodal, step).values);
-        y.push_back(read_exodus_field(b_path, name, nodal, step).values);
+        x.push_back(read_exodus_field(a_path, a_mesh, name, nodal, step).values);
+        y.push_back(read_exodus_field(b_path, b_mesh, name, nodal, step).values);
         double& s = scale[quantity_of(name, false)];
         s = std::max(s, largest_magnitude(y.back()));
       }

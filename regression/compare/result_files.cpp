@@ -96,7 +96,11 @@ ExodusContents exodus_contents(const std::string& path) {
 
 ExodusField read_exodus_field(const std::string& path, const std::string& name, bool nodal,
                               int step) {
-  const Mesh mesh = read_exodus_mesh(path);
+  return read_exodus_field(path, read_exodus_mesh(path), name, nodal, step);
+}
+
+ExodusField read_exodus_field(const std::string& path, const Mesh& mesh, const std::string& name,
+                              bool nodal, int step) {
   ExodusFile file(path, ExodusMode::read);
   const auto names = variable_names(file, nodal ? EX_NODAL : EX_ELEM_BLOCK);
   const auto found = std::find(names.begin(), names.end(), name);

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "framework/mesh/mesh.hpp"
+
 namespace railfe {
 
 /// A CSV file: header names and rows of cells (text as written).
@@ -43,6 +45,9 @@ ExodusContents exodus_contents(const std::string& path);
 /// 0 or negative counts from the end: 0 = last). Throws std::runtime_error if absent.
 ExodusField read_exodus_field(const std::string& path, const std::string& name, bool nodal,
                               int step);
+/// The same with the file's mesh already read (read_exodus_mesh), for callers reading many fields.
+ExodusField read_exodus_field(const std::string& path, const Mesh& mesh, const std::string& name,
+                              bool nodal, int step);
 
 /// Nodes (0-based) of node set \p name in \p path; throws std::runtime_error if absent.
 std::vector<long long> read_exodus_node_set(const std::string& path, const std::string& name);
