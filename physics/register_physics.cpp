@@ -2,6 +2,8 @@
 // folder under physics/ and one line here.
 #include "framework/app/registry.hpp"
 #include "physics/materials/elastic_material.hpp"
+#include "physics/modal/modal_module.hpp"
+#include "physics/parts/wheel_mesh.hpp"
 #include "physics/statics/statics_module.hpp"
 
 namespace railfe {
@@ -10,6 +12,8 @@ void register_physics(ModuleRegistry& registry) {
   registry.add_section({"Materials", "Isotropic linear elastic materials of the solid blocks.",
                         false, materials_parameters});
   registry.add_module(statics_module());
+  registry.add_module(modal_module());
+  registry.add_mesh_generator(wheel_mesh_generator());
 }
 
 }  // namespace railfe

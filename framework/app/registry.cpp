@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "framework/deck/parameter_rule.hpp"
+
 namespace railfe {
 
 void ModuleRegistry::add_module(ModuleDescriptor module) {
@@ -13,6 +15,17 @@ void ModuleRegistry::add_module(ModuleDescriptor module) {
 
 void ModuleRegistry::add_section(SectionDescriptor section) {
   sections_.push_back(std::move(section));
+}
+
+void ModuleRegistry::add_mesh_generator(MeshGeneratorDescriptor generator) {
+  // The names taken so far: the framework's own types and the generators registered before.
+  const auto* types = rule_of(mesh_parameters(generators_).list()->getEntry("Type"));
+  for (const auto& choice : types->choices()) {
+    if (choice.value == generator.name) {
+      throw std::logic_error("railfe: mesh type '" + generator.name + "' registered twice");
+    }
+  }
+  generators_.push_back(std::move(generator));
 }
 
 const ModuleDescriptor* ModuleRegistry::find_module(const std::string& name) const {

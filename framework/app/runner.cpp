@@ -61,7 +61,10 @@ int run(const RunOptions& options, const ModuleRegistry& registry, const Communi
 
   phase.restart();
   const auto& mesh_section = deck.parameters->sublist("Mesh");
-  Mesh mesh = build_mesh(mesh_section, deck);
+  // Every rank builds the mesh; a failure on some ranks only (a generator's helper program, a
+  // file system) must stop them all.
+  Mesh mesh;
+  comm.run_collectively([&] { mesh = build_mesh(mesh_section, deck, registry.mesh_generators()); });
   const PartitionMethod method = partition_method(mesh_section);
   Model model(deck, std::move(mesh), comm, method);
   const double mesh_seconds = phase.seconds();

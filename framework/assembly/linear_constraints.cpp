@@ -155,36 +155,51 @@ Teuchos::RCP<TpetraMatrix> LinearConstraints::eliminate_multipoint(
 
 void LinearConstraints::eliminate_prescribed(TpetraMatrix& K, TpetraVector& f) {
   const auto domain = K.getDomainMap();
-  TpetraVector values(domain), marker(domain);
-  for (const auto& [row, value] : prescribed_) {
+  TpetraVector values(domain);
+  for (const auto& [row, value] : prescribed_)
     values.replaceLocalValue(row, value);
-    marker.replaceLocalValue(row, 1.0);
-  }
   // Move the known values to the right-hand side: f ← f − K g.
   TpetraVector work(K.getRangeMap());
   K.apply(values, work);
   f.update(-1.0, work, 1.0);
 
-  TpetraVector column_marker(K.getColMap());
-  TpetraImport to_columns(domain, K.getColMap());
+  // The diagonal keeps its size, so the equation u_i = value is as well scaled as its neighbours.
+  const std::vector<double> diagonal = zero_prescribed_couplings(K, true);
+  for (const auto& [row, value] : prescribed_) {
+    f.replaceLocalValue(row, diagonal[row] * value);
+  }
+}
+
+void LinearConstraints::remove_prescribed(TpetraMatrix& M) const {
+  zero_prescribed_couplings(M, false);
+}
+
+std::vector<double> LinearConstraints::zero_prescribed_couplings(TpetraMatrix& A,
+                                                                 bool keep_diagonal) const {
+  const auto domain = A.getDomainMap();
+  TpetraVector marker(domain);
+  for (const auto& entry : prescribed_)
+    marker.replaceLocalValue(entry.first, 1.0);
+  TpetraVector column_marker(A.getColMap());
+  TpetraImport to_columns(domain, A.getColMap());
   column_marker.doImport(marker, to_columns, Tpetra::INSERT);
   const auto is_column_prescribed = column_marker.getData(0);
-  std::vector<char> is_row_prescribed(local_rows(K), 0);
+  std::vector<char> is_row_prescribed(local_rows(A), 0);
   for (const auto& entry : prescribed_)
     is_row_prescribed[entry.first] = 1;
 
-  K.resumeFill();
-  auto local = K.getLocalMatrixHost();
-  const auto& row_map = *K.getRowMap();
-  const auto& column_map = *K.getColMap();
-  std::vector<double> diagonal(local_rows(K), 1.0);
-  for (std::size_t row = 0; row < local_rows(K); ++row) {
+  A.resumeFill();
+  auto local = A.getLocalMatrixHost();
+  const auto& row_map = *A.getRowMap();
+  const auto& column_map = *A.getColMap();
+  std::vector<double> diagonal(local_rows(A), 1.0);
+  for (std::size_t row = 0; row < local_rows(A); ++row) {
     const auto begin = local.graph.row_map(row), end = local.graph.row_map(row + 1);
     if (is_row_prescribed[row]) {
       const LocalIndex diagonal_column =
           column_map.getLocalElement(row_map.getGlobalElement(static_cast<LocalIndex>(row)));
       for (auto k = begin; k < end; ++k) {
-        if (local.graph.entries(k) == diagonal_column && local.values(k) != 0.0) {
+        if (keep_diagonal && local.graph.entries(k) == diagonal_column && local.values(k) != 0.0) {
           diagonal[row] = local.values(k);
         } else {
           local.values(k) = 0.0;
@@ -197,11 +212,8 @@ void LinearConstraints::eliminate_prescribed(TpetraMatrix& K, TpetraVector& f) {
       }
     }
   }
-  K.fillComplete(K.getDomainMap(), K.getRangeMap());
-  // The diagonal keeps its size, so the equation u_i = value is as well scaled as its neighbours.
-  for (const auto& [row, value] : prescribed_) {
-    f.replaceLocalValue(row, diagonal[row] * value);
-  }
+  A.fillComplete(A.getDomainMap(), A.getRangeMap());
+  return diagonal;
 }
 
 void LinearConstraints::recover(TpetraVector& solution) const {

@@ -45,6 +45,11 @@ class LinearConstraints {
   /// itself, modified in place; with them it is a new matrix. The rows of prescribed DOFs are
   /// kept for reactions().
   Teuchos::RCP<TpetraMatrix> apply(const Teuchos::RCP<TpetraMatrix>& K, TpetraVector& f);
+  /// Zeroes the rows and columns of the prescribed DOFs in \p M, diagonal included (collective).
+  /// For the mass matrix of an eigenproblem whose stiffness went through apply() with zero
+  /// values: the prescribed DOFs then carry no inertia and give no eigenvalue. Prescribed DOFs
+  /// only (no multi-point constraints).
+  void remove_prescribed(TpetraMatrix& M) const;
   /// Turns the solution of the constrained system into u, in place (collective).
   void recover(TpetraVector& solution) const;
   /// Reaction forces r = K u − f at prescribed DOFs (zero elsewhere), from the rows apply() kept.
@@ -54,6 +59,9 @@ class LinearConstraints {
   Teuchos::RCP<TpetraMatrix> eliminate_multipoint(const Teuchos::RCP<TpetraMatrix>& K,
                                                   TpetraVector& f);
   void eliminate_prescribed(TpetraMatrix& K, TpetraVector& f);
+  // Zeroes prescribed rows and columns of A; returns each row's diagonal (1 where it was zero or
+  // not kept).
+  std::vector<double> zero_prescribed_couplings(TpetraMatrix& A, bool keep_diagonal) const;
 
   const DofMap* dofs_;
   std::string source_;

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -125,6 +126,8 @@ const char* gmsh_type_name(int type) {
   switch (type) {
     case 2:
       return "triangle";
+    case 5:
+      return "hexahedron";
     case 4:
       return "tetrahedron";
     case 6:
@@ -139,6 +142,7 @@ const char* gmsh_type_name(int type) {
 using EntityKey = std::pair<int, int>;  // (dimension, entity tag)
 
 struct GmshContent {
+  bool planar = false;  // a 2-D section: quadrangles are the elements, there are no volumes
   std::map<EntityKey, std::string> physical_names;         // (dim, physical tag) -> name
   std::map<EntityKey, std::vector<int>> entity_physicals;  // (dim, entity) -> physical tags
   std::vector<double> coordinates;
@@ -147,7 +151,9 @@ struct GmshContent {
   std::map<std::string, std::vector<std::array<GlobalIndex, 8>>> hexes;
   std::map<std::string, int> block_ids;
   std::map<std::string, std::vector<std::array<GlobalIndex, 4>>> quads;  // per physical surface
-  std::map<std::string, std::set<GlobalIndex>> set_nodes;                // per physical group
+  // Planar meshes: quadrangles per block name (physical surface, else surface entity).
+  std::map<std::string, std::vector<std::array<GlobalIndex, 4>>> section_quads;
+  std::map<std::string, std::set<GlobalIndex>> set_nodes;  // per physical group
   std::map<std::string, int> set_ids;
 };
 
@@ -231,6 +237,51 @@ GlobalIndex node_of(TokenReader& in, const GmshContent& content, long long tag) 
   return it->second;
 }
 
+// The name a block of a volume (dim 3) or, in a planar mesh, a surface (dim 2) gets; records its
+// id.
+std::string block_of_entity(TokenReader& in, GmshContent& content, int dim, int entity) {
+  const auto& physicals = content.entity_physicals[{dim, entity}];
+  const char* kind = dim == 3 ? "volume" : "surface";
+  if (physicals.size() > 1) {
+    in.fail(std::string(kind) + " " + std::to_string(entity) + " belongs to " +
+            std::to_string(physicals.size()) + " physical groups; an element block needs one");
+  }
+  const int tag = physicals.empty() ? entity : physicals[0];
+  const std::string name = physicals.empty() ? std::string(kind) + "_" + std::to_string(entity)
+                                             : physical_name(content, dim, tag);
+  content.block_ids.emplace(name, tag);
+  return name;
+}
+
+// One element block of a planar mesh: quadrangles form blocks, points and lines of physical
+// groups form node sets.
+void read_section_elements(TokenReader& in, GmshContent& content, int dim, int entity, int type,
+                           long long count) {
+  if (dim == 3 || (dim == 2 && type != 3) || gmsh_nodes_per_element(type) < 0) {
+    in.fail(std::string(gmsh_type_name(type)) + " elements (Gmsh type " + std::to_string(type) +
+            ") in entity " + std::to_string(entity) + " of dimension " + std::to_string(dim) +
+            "; a cross-section mesh holds only quadrangles (use Recombine)");
+  }
+  const int n_nodes = gmsh_nodes_per_element(type);
+  const auto& physicals = content.entity_physicals[{dim, entity}];
+  const std::string block_name = dim == 2 ? block_of_entity(in, content, dim, entity) : "";
+  for (long long e = 0; e < count; ++e) {
+    in.integer();  // element tag
+    std::array<GlobalIndex, 4> nodes{};
+    for (int a = 0; a < n_nodes; ++a)
+      nodes[a] = node_of(in, content, in.integer());
+    if (dim == 2) {
+      content.section_quads[block_name].push_back(nodes);
+      continue;
+    }
+    for (int physical : physicals) {
+      const std::string name = physical_name(content, dim, physical);
+      content.set_ids.emplace(name, physical);
+      content.set_nodes[name].insert(nodes.begin(), nodes.begin() + n_nodes);
+    }
+  }
+}
+
 void read_elements(TokenReader& in, GmshContent& content) {
   const long long n_blocks = in.integer();
   in.integer();  // element count
@@ -243,6 +294,10 @@ void read_elements(TokenReader& in, GmshContent& content) {
     const long long count = in.integer();
     const int n_nodes = gmsh_nodes_per_element(type);
     const auto& physicals = content.entity_physicals[{dim, entity}];
+    if (content.planar) {
+      read_section_elements(in, content, dim, entity, type, count);
+      continue;
+    }
     if (n_nodes < 0 || (dim == 3 && type != 5)) {
       in.fail(std::string(gmsh_type_name(type)) + " elements (Gmsh type " + std::to_string(type) +
               ") in volume " + std::to_string(entity) +
@@ -252,17 +307,7 @@ void read_elements(TokenReader& in, GmshContent& content) {
     if (dim == 2 && type == 2 && !physicals.empty()) {
       in.fail("triangles in a physical surface cannot form a side set of hexahedra");
     }
-    if (dim == 3 && physicals.size() > 1) {
-      in.fail("volume " + std::to_string(entity) + " belongs to " +
-              std::to_string(physicals.size()) + " physical volumes; an element block needs one");
-    }
-    std::string block_name;
-    if (dim == 3) {
-      const int tag = physicals.empty() ? entity : physicals[0];
-      block_name =
-          physicals.empty() ? "volume_" + std::to_string(entity) : physical_name(content, 3, tag);
-      content.block_ids.emplace(block_name, tag);
-    }
+    const std::string block_name = dim == 3 ? block_of_entity(in, content, dim, entity) : "";
     for (long long e = 0; e < count; ++e) {
       in.integer();  // element tag
       std::array<GlobalIndex, 8> nodes{};
@@ -334,9 +379,7 @@ void build_side_sets(const GmshContent& content, Mesh& mesh) {
   }
 }
 
-}  // namespace
-
-Mesh read_gmsh_mesh(const std::string& path) {
+GmshContent parse_file(const std::string& path, bool planar) {
   std::ifstream file(path, std::ios::binary);
   if (!file)
     throw_input_error(path, "", "mesh file not found or not readable");
@@ -344,6 +387,7 @@ Mesh read_gmsh_mesh(const std::string& path) {
   buffer << file.rdbuf();
   TokenReader in(buffer.str(), path);
   GmshContent content;
+  content.planar = planar;
 
   bool saw_format = false;
   while (!in.at_end()) {
@@ -376,7 +420,13 @@ Mesh read_gmsh_mesh(const std::string& path) {
   }
   if (!saw_format)
     in.fail("empty file");
+  return content;
+}
 
+}  // namespace
+
+Mesh read_gmsh_mesh(const std::string& path) {
+  GmshContent content = parse_file(path, false);
   Mesh mesh;
   mesh.source = path;
   mesh.coordinates = std::move(content.coordinates);
@@ -395,6 +445,56 @@ Mesh read_gmsh_mesh(const std::string& path) {
   }
   build_side_sets(content, mesh);
   return mesh;
+}
+
+SectionMesh read_gmsh_section(const std::string& path) {
+  const GmshContent content = parse_file(path, true);
+  if (content.section_quads.empty()) {
+    throw_input_error(path, "", "holds no quadrangles",
+                      "a 2-D mesh of quadrangles in the x-y plane (gmsh -2 with Recombine)");
+  }
+  // Only nodes of quadrangles are kept (geometry points such as arc centres are dropped), and
+  // they are renumbered in order of first use.
+  const GlobalIndex n_file_nodes = static_cast<GlobalIndex>(content.coordinates.size() / 3);
+  std::vector<GlobalIndex> renumbered(n_file_nodes, -1);
+  SectionMesh section;
+  section.source = path;
+  double extent = 0;
+  for (double x : content.coordinates)
+    extent = std::max(extent, std::abs(x));
+  for (const auto& [name, quads] : content.section_quads) {
+    const int block = static_cast<int>(section.blocks.size());
+    section.blocks.push_back({name, content.block_ids.at(name)});
+    for (auto quad : quads) {
+      for (GlobalIndex& node : quad) {
+        if (renumbered[node] < 0) {
+          const double* x = &content.coordinates[3 * node];
+          if (std::abs(x[2]) > 1e-9 * extent) {
+            throw_input_error(path,
+                              "node at (" + std::to_string(x[0]) + ", " + std::to_string(x[1]) +
+                                  ", " + std::to_string(x[2]) + ")",
+                              "lies off the x-y plane", "a section in the plane z = 0");
+          }
+          renumbered[node] = section.n_nodes();
+          section.coordinates.push_back(x[0]);
+          section.coordinates.push_back(x[1]);
+        }
+        node = renumbered[node];
+      }
+      section.quads.push_back(quad);
+      section.quad_blocks.push_back(block);
+    }
+  }
+  for (const auto& [name, nodes] : content.set_nodes) {
+    NodeSet set{name, content.set_ids.at(name), {}};
+    for (GlobalIndex node : nodes) {
+      if (renumbered[node] >= 0)
+        set.nodes.push_back(renumbered[node]);
+    }
+    std::sort(set.nodes.begin(), set.nodes.end());
+    section.node_sets.push_back(std::move(set));
+  }
+  return section;
 }
 
 }  // namespace railfe

@@ -2,15 +2,25 @@
 
 #include <Teuchos_Array.hpp>
 
+#include <cctype>
+
 #include "framework/base/error.hpp"
 #include "framework/mesh/box_generator.hpp"
 #include "framework/mesh/derived_sets.hpp"
 #include "framework/mesh/mesh_checks.hpp"
 #include "framework/mesh/mesh_readers.hpp"
+#include "framework/mesh/revolve.hpp"
 
 namespace railfe {
 
-ParameterSpec mesh_parameters() {
+std::string generator_sublist_name(const std::string& name) {
+  std::string sublist = name;
+  if (!sublist.empty())
+    sublist[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(sublist[0])));
+  return sublist;
+}
+
+ParameterSpec mesh_parameters(const std::vector<MeshGeneratorDescriptor>& generators) {
   ParameterSpec box(
       "A structured hex8 box: node and side sets xmin, xmax, ymin, ymax, zmin, zmax "
       "cover its faces.");
@@ -22,6 +32,20 @@ ParameterSpec mesh_parameters() {
                  "1 = uniform).",
                  "", 3, Range::positive());
   box.text("Block name", "block_1", "Name of the element block.");
+
+  const std::string revolved_doc =
+      "Type revolved: a quadrilateral cross-section revolved through 360 degrees about the y "
+      "axis, the section point (r, a) going to (x, y, z) = (r cos θ, a, r sin θ), the seam "
+      "merged. Each slice spans a chord, so the volume is n sin(2π/n)/2π of the exact body's "
+      "for n elements around.";
+  ParameterSpec revolved(revolved_doc);
+  revolved.required_text(
+      "Section file",
+      "Gmsh .msh 4.1 ASCII mesh of the cross-section, relative to the deck's directory: "
+      "quadrangles only, in the x-y plane with x = r > 0 and y = a. Physical surfaces become "
+      "blocks; physical curves and points become node sets of their revolved nodes (and side "
+      "sets where they follow the section's boundary).");
+  revolved.integer("Elements around", 48, "Elements around the axis.", Range::at_least(3));
 
   ParameterSpec node_set("A node set selected from the mesh: give Box or Point.");
   node_set.real_array("Box", {}, "Nodes inside {xmin, xmax, ymin, ymax, zmin, zmax}.", "m", 6);
@@ -36,16 +60,29 @@ ParameterSpec mesh_parameters() {
   side_set.text("Within", "", "Select only among this side set's faces ('' = all exterior faces).");
 
   ParameterSpec spec("The mesh: generated, or read from Exodus II or Gmsh.");
-  spec.required_choice("Type",
-                       {{"box", "generate a structured box (sublist Box)"},
-                        {"exodus", "read an Exodus II file (File)"},
-                        {"gmsh", "read a Gmsh .msh 4.1 ASCII file (File)"}},
-                       "Where the mesh comes from.");
+  std::vector<Choice> types = {
+      {"box", "generate a structured box (sublist Box)"},
+      {"exodus", "read an Exodus II file (File)"},
+      {"gmsh", "read a Gmsh .msh 4.1 ASCII file (File)"},
+      {"revolved", "revolve a Gmsh cross-section about the y axis (sublist Revolved)"}};
+  for (const auto& generator : generators) {
+    types.push_back({generator.name, generator.summary + " (sublist " +
+                                         generator_sublist_name(generator.name) + ")"});
+  }
+  spec.required_choice("Type", types, "Where the mesh comes from.");
   spec.text("File", "", "Mesh file for Type exodus or gmsh, relative to the deck's directory.");
   spec.real("Length scale", 1.0,
-            "Factor applied to file coordinates to get metres (0.001 for a mesh in mm).", "",
-            Range::positive());
+            "Factor applied to file coordinates (Type exodus, gmsh, revolved) to get metres "
+            "(0.001 for a mesh in mm).",
+            "", Range::positive());
   spec.sublist("Box", box, "Generated box (Type box).");
+  spec.sublist("Revolved", revolved, revolved_doc);
+  for (const auto& generator : generators) {
+    const ParameterSpec parameters = generator.parameters();
+    spec.sublist(generator_sublist_name(generator.name), parameters,
+                 "Type " + generator.name + ": " +
+                     (parameters.doc().empty() ? generator.summary : parameters.doc()));
+  }
   spec.named_sublists("Node sets", node_set, "Node sets defined from geometry.");
   spec.named_sublists("Side sets", side_set, "Side sets defined from geometry.");
   spec.choice("Partitioner", "multijagged",
@@ -89,13 +126,50 @@ Mesh generate_from_deck(const Teuchos::ParameterList& section, const Deck& deck)
   return generate_box(spec);
 }
 
+// The sublist a generated type needs; absent only when its spec has required entries.
+const Teuchos::ParameterList& type_sublist(const Teuchos::ParameterList& section,
+                                           const std::string& name, const std::string& type,
+                                           const Deck& deck) {
+  if (!section.isSublist(name)) {
+    throw_input_error(deck.source, "Mesh/" + name,
+                      "missing required sublist for Type '" + type + "'",
+                      "a " + name + " sublist (see railfe --describe framework)");
+  }
+  return section.sublist(name);
+}
+
+Mesh revolve_from_deck(const Teuchos::ParameterList& section, const Deck& deck) {
+  const auto& revolved = type_sublist(section, "Revolved", "revolved", deck);
+  SectionMesh cross_section =
+      read_gmsh_section(deck.resolve(revolved.get<std::string>("Section file")));
+  const double scale = section.get<double>("Length scale");
+  for (double& x : cross_section.coordinates)
+    x *= scale;
+  return revolve(cross_section, revolved.get<int>("Elements around"));
+}
+
+const MeshGeneratorDescriptor* find_generator(
+    const std::vector<MeshGeneratorDescriptor>& generators, const std::string& type) {
+  for (const auto& generator : generators) {
+    if (generator.name == type)
+      return &generator;
+  }
+  return nullptr;
+}
+
 }  // namespace
 
-Mesh build_mesh(const Teuchos::ParameterList& section, const Deck& deck) {
+Mesh build_mesh(const Teuchos::ParameterList& section, const Deck& deck,
+                const std::vector<MeshGeneratorDescriptor>& generators) {
   const auto type = section.get<std::string>("Type");
   Mesh mesh;
   if (type == "box") {
     mesh = generate_from_deck(section, deck);
+  } else if (type == "revolved") {
+    mesh = revolve_from_deck(section, deck);
+  } else if (const auto* generator = find_generator(generators, type)) {
+    const std::string name = generator_sublist_name(type);
+    mesh = generator->build(type_sublist(section, name, type, deck), deck);
   } else {
     const auto file = section.get<std::string>("File");
     if (file.empty()) {

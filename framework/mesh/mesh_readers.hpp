@@ -1,10 +1,11 @@
 #pragma once
 /// \file
-/// Mesh file readers. Both return a Mesh numbered from 0, with set and block names from the file.
+/// Mesh file readers. They number from 0 and keep the set and block names of the file.
 
 #include <string>
 
 #include "framework/mesh/mesh.hpp"
+#include "framework/mesh/revolve.hpp"
 
 namespace railfe {
 
@@ -18,5 +19,11 @@ Mesh read_exodus_mesh(const std::string& path);
 /// side set and a node set of that name; physical curves and points become node sets.
 /// Throws InputError naming the file and line for anything it cannot use.
 Mesh read_gmsh_mesh(const std::string& path);
+
+/// Reads a Gmsh .msh 4.1 ASCII mesh of a cross-section to revolve: quadrangles in the x-y plane,
+/// x = r and y = a. Each physical surface (or surface entity when none is defined) is a block;
+/// physical curves and points become node sets. Nodes that no quadrangle uses are dropped.
+/// Throws InputError naming the file for triangles, volume elements or nodes off the plane.
+SectionMesh read_gmsh_section(const std::string& path);
 
 }  // namespace railfe

@@ -61,12 +61,13 @@ class CholmodSolver : public RootDirectSolver {
     return "";
   }
 
-  std::vector<double> solve_on_root(const std::vector<double>& rhs) override {
-    const long n = static_cast<long>(rhs.size());
-    cholmod_dense* B = cholmod_l_allocate_dense(n, 1, n, CHOLMOD_REAL, &common_);
-    std::memcpy(B->x, rhs.data(), sizeof(double) * n);
+  std::vector<double> solve_on_root(const std::vector<double>& rhs, int n_columns) override {
+    const long n = static_cast<long>(rhs.size()) / n_columns;
+    cholmod_dense* B = cholmod_l_allocate_dense(n, n_columns, n, CHOLMOD_REAL, &common_);
+    std::memcpy(B->x, rhs.data(), sizeof(double) * rhs.size());
     cholmod_dense* X = cholmod_l_solve(CHOLMOD_A, factor_, B, &common_);
-    std::vector<double> solution(static_cast<double*>(X->x), static_cast<double*>(X->x) + n);
+    std::vector<double> solution(static_cast<double*>(X->x),
+                                 static_cast<double*>(X->x) + rhs.size());
     cholmod_l_free_dense(&X, &common_);
     cholmod_l_free_dense(&B, &common_);
     return solution;

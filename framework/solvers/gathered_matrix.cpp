@@ -3,6 +3,7 @@
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Import.hpp>
+#include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
 #include "framework/assembly/tpetra_compat.hpp"
@@ -45,20 +46,26 @@ GatheredMatrix::GatheredMatrix(const TpetraMatrix& A) {
   }
 }
 
-std::vector<double> GatheredMatrix::gather(const TpetraVector& b) const {
-  TpetraVector root(root_map_);
+std::vector<double> GatheredMatrix::gather(const TpetraMultiVector& b) const {
+  const std::size_t n_columns = b.getNumVectors();
+  TpetraMultiVector root(root_map_, n_columns);
   root.doImport(b, *importer_, Tpetra::INSERT);
   if (!on_root_)
     return {};
-  const auto data = root.getData();
-  return std::vector<double>(data.begin(), data.end());
+  std::vector<double> values(n_rows() * n_columns);
+  root.get1dCopy(Teuchos::ArrayView<double>(values.data(), values.size()), n_rows());
+  return values;
 }
 
-void GatheredMatrix::scatter(const std::vector<double>& root_values, TpetraVector& x) const {
-  TpetraVector root(root_map_);
+void GatheredMatrix::scatter(const std::vector<double>& root_values, TpetraMultiVector& x) const {
+  const std::size_t n_columns = x.getNumVectors();
+  TpetraMultiVector root(root_map_, n_columns);
   if (on_root_) {
-    auto data = root.getDataNonConst();
-    std::copy(root_values.begin(), root_values.end(), data.begin());
+    for (std::size_t j = 0; j < n_columns; ++j) {
+      auto column = root.getDataNonConst(j);
+      std::copy(root_values.begin() + j * n_rows(), root_values.begin() + (j + 1) * n_rows(),
+                column.begin());
+    }
   }
   x.doExport(root, *importer_, Tpetra::INSERT);
 }

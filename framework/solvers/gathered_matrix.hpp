@@ -32,10 +32,12 @@ class GatheredMatrix {
   /// The global DOF behind gathered row \p row (rank 0).
   GlobalIndex global_index(long row) const { return global_indices_[row]; }
 
-  /// The entries of \p b in gathered order on rank 0; empty elsewhere (collective).
-  std::vector<double> gather(const TpetraVector& b) const;
-  /// Writes \p root_values (meaningful on rank 0) into the distributed \p x (collective).
-  void scatter(const std::vector<double>& root_values, TpetraVector& x) const;
+  /// The columns of \p b one after another, each in gathered order, on rank 0; empty elsewhere
+  /// (collective).
+  std::vector<double> gather(const TpetraMultiVector& b) const;
+  /// Writes \p root_values (columns one after another, meaningful on rank 0) into the
+  /// distributed \p x (collective).
+  void scatter(const std::vector<double>& root_values, TpetraMultiVector& x) const;
 
  private:
   bool on_root_ = false;

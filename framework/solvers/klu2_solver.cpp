@@ -41,14 +41,18 @@ class Klu2Solver : public RootDirectSolver {
     return "";
   }
 
-  std::vector<double> solve_on_root(const std::vector<double>& rhs) override {
-    auto B = Teuchos::rcp(new TpetraMultiVector(map_, 1));
-    auto X = Teuchos::rcp(new TpetraMultiVector(map_, 1));
-    auto data = B->getDataNonConst(0);
-    std::copy(rhs.begin(), rhs.end(), data.begin());
+  std::vector<double> solve_on_root(const std::vector<double>& rhs, int n_columns) override {
+    const std::size_t n = rhs.size() / n_columns;
+    auto B = Teuchos::rcp(new TpetraMultiVector(map_, n_columns));
+    auto X = Teuchos::rcp(new TpetraMultiVector(map_, n_columns));
+    for (int j = 0; j < n_columns; ++j) {
+      auto column = B->getDataNonConst(j);
+      std::copy(rhs.begin() + j * n, rhs.begin() + (j + 1) * n, column.begin());
+    }
     solver_->solve(X.ptr(), B.ptr());
-    const auto result = X->getData(0);
-    return std::vector<double>(result.begin(), result.end());
+    std::vector<double> solution(rhs.size());
+    X->get1dCopy(Teuchos::ArrayView<double>(solution.data(), solution.size()), n);
+    return solution;
   }
 
  private:

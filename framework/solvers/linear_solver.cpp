@@ -1,5 +1,10 @@
 #include "framework/solvers/linear_solver.hpp"
 
+#include <Tpetra_MultiVector.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include <algorithm>
+
 #include "framework/solvers/direct_solvers.hpp"
 #include "framework/solvers/krylov_solver.hpp"
 
@@ -40,6 +45,20 @@ ParameterSpec linear_solver_parameters() {
             "||b||inf) exceeds this (a sound factorization gives about 1e-16).",
             "", Range::open(0.0, 1.0));
   return spec;
+}
+
+SolveReport LinearSolver::solve_block(const TpetraMultiVector& B, TpetraMultiVector& X) {
+  SolveReport worst;
+  for (std::size_t j = 0; j < B.getNumVectors(); ++j) {
+    const auto x = X.getVectorNonConst(j);
+    const SolveReport report = solve(*B.getVector(j), *x);
+    const double solve_seconds = worst.solve_seconds + report.solve_seconds;
+    if (j == 0 || report.backward_error > worst.backward_error)
+      worst = report;
+    worst.iterations = std::max(worst.iterations, report.iterations);
+    worst.solve_seconds = solve_seconds;
+  }
+  return worst;
 }
 
 std::unique_ptr<LinearSolver> create_linear_solver(const Teuchos::ParameterList& parameters) {

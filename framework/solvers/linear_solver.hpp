@@ -46,6 +46,10 @@ class LinearSolver {
   /// Solves A x = b, x holding the initial guess for iterative methods (collective). Throws
   /// RunError if the solution does not meet the configured accuracy.
   virtual SolveReport solve(const TpetraVector& b, TpetraVector& x) = 0;
+  /// Solves A X = B for every column of \p B (collective); the report gives the worst column.
+  /// The default solves the columns one after another; direct solvers override it to pass over
+  /// their factor once for all columns (eigensolvers apply the inverse to blocks of vectors).
+  virtual SolveReport solve_block(const TpetraMultiVector& B, TpetraMultiVector& X);
   /// Reports the progress of later solves to \p progress (may be null; it must outlive the
   /// solves). Iterative solvers report the share of the residual reduction achieved.
   void report_progress_to(Progress* progress) { progress_ = progress; }

@@ -1,6 +1,7 @@
 #include "framework/solvers/root_direct_solver.hpp"
 
 #include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
 #include "framework/base/error.hpp"
@@ -30,25 +31,34 @@ void RootDirectSolver::setup(const Teuchos::RCP<const TpetraMatrix>& A,
 }
 
 SolveReport RootDirectSolver::solve(const TpetraVector& b, TpetraVector& x) {
+  return solve_block(b, x);
+}
+
+SolveReport RootDirectSolver::solve_block(const TpetraMultiVector& B, TpetraMultiVector& X) {
   Stopwatch clock;
-  const std::vector<double> rhs = gathered_->gather(b);
+  const int n_columns = static_cast<int>(B.getNumVectors());
+  const std::vector<double> rhs = gathered_->gather(B);
   std::vector<double> solution;
   std::string problem;
   if (gathered_->on_root()) {
     try {
-      solution = solve_on_root(rhs);
+      solution = solve_on_root(rhs, n_columns);
     } catch (const std::exception& error) {
       problem = method_ + " solve failed: " + essential_line(error.what());
     }
   }
   share_root_verdict(*matrix_, problem);
-  gathered_->scatter(solution, x);
+  gathered_->scatter(solution, X);
   SolveReport report;
   report.method = method_ + " (on rank 0)";
-  const ResidualNorms norms = residual_norms(*matrix_, x, b);
-  report.relative_residual = norms.relative_residual;
-  report.backward_error = norms.backward_error;
-  require_backward_error(norms, limit_, method_);
+  for (int j = 0; j < n_columns; ++j) {
+    const ResidualNorms norms = residual_norms(*matrix_, *X.getVector(j), *B.getVector(j));
+    if (j == 0 || norms.backward_error > report.backward_error) {
+      report.relative_residual = norms.relative_residual;
+      report.backward_error = norms.backward_error;
+    }
+    require_backward_error(norms, limit_, method_);
+  }
   report.setup_seconds = setup_seconds_;
   report.solve_seconds = clock.seconds();
   return report;

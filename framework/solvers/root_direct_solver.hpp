@@ -21,13 +21,14 @@ class RootDirectSolver : public LinearSolver {
 
   void setup(const Teuchos::RCP<const TpetraMatrix>& A, const ProblemTraits& traits) final;
   SolveReport solve(const TpetraVector& b, TpetraVector& x) final;
+  SolveReport solve_block(const TpetraMultiVector& B, TpetraMultiVector& X) final;
 
  protected:
   /// Factorizes \p matrix (called on rank 0 only). Returns "" or the problem, phrased for users.
   virtual std::string factorize(const GatheredMatrix& matrix, const ProblemTraits& traits) = 0;
-  /// Solves with the factorization for \p rhs in gathered order (rank 0 only); throws
-  /// std::exception on failure.
-  virtual std::vector<double> solve_on_root(const std::vector<double>& rhs) = 0;
+  /// Solves with the factorization for the \p n_columns right-hand sides \p rhs (columns one
+  /// after another, each in gathered order; rank 0 only); throws std::exception on failure.
+  virtual std::vector<double> solve_on_root(const std::vector<double>& rhs, int n_columns) = 0;
 
  private:
   std::string method_;

@@ -25,26 +25,49 @@ void element_coordinates(const MeshPartition& partition, const LocalBlock& block
   }
 }
 
-void assemble_elastic_stiffness(FeMatrix& K, const MaterialTable& materials, Progress* progress) {
-  const MeshPartition& partition = K.dofs().partition();
-  alignas(64) double element_matrix[24 * 24];
+namespace {
+
+// Adds the matrix \p element_matrix(block, x, out) gives each local hex8 element into \p A.
+template <typename ElementMatrix>
+void assemble_hex8_matrix(FeMatrix& A, ElementMatrix element_matrix, Progress* progress) {
+  const MeshPartition& partition = A.dofs().partition();
+  alignas(64) double matrix[24 * 24];
   double x[8][3];
-  K.begin_assembly();
+  A.begin_assembly();
   for (std::size_t b = 0; b < partition.blocks().size(); ++b) {
     const auto& block = partition.blocks()[b];
     if (partition.mesh().blocks[block.block].type != ElementType::hex8)
       continue;
-    const LameConstants lame = materials.of_block(block.block).lame();
     const LocalIndex first = partition.first_local_element(b);
     for (LocalIndex e = 0; e < block.n_elements(); ++e) {
       element_coordinates(partition, block, e, x);
-      hex8_stiffness(x, lame, element_matrix);
-      K.add_element(first + e, element_matrix);
+      element_matrix(block.block, x, matrix);
+      A.add_element(first + e, matrix);
       if (progress != nullptr && (e & 8191) == 0)
         progress->update(first + e);
     }
   }
-  K.end_assembly();
+  A.end_assembly();
+}
+
+}  // namespace
+
+void assemble_elastic_stiffness(FeMatrix& K, const MaterialTable& materials, Progress* progress) {
+  assemble_hex8_matrix(
+      K,
+      [&](int block, const double x[8][3], double* matrix) {
+        hex8_stiffness(x, materials.of_block(block).lame(), matrix);
+      },
+      progress);
+}
+
+void assemble_mass(FeMatrix& M, const MaterialTable& materials, bool lumped) {
+  assemble_hex8_matrix(
+      M,
+      [&](int block, const double x[8][3], double* matrix) {
+        hex8_mass(x, materials.of_block(block).density, lumped, matrix);
+      },
+      nullptr);
 }
 
 namespace {

@@ -26,6 +26,10 @@ void element_coordinates(const MeshPartition& partition, const LocalBlock& block
 void assemble_elastic_stiffness(FeMatrix& K, const MaterialTable& materials,
                                 Progress* progress = nullptr);
 
+/// Assembles the mass of every local hex8 element into \p M (collective): consistent, or lumped
+/// (row sums) when \p lumped.
+void assemble_mass(FeMatrix& M, const MaterialTable& materials, bool lumped);
+
 /// Adds gravity, surface loads and nodal forces into \p forces over the owned DOFs of \p dofs,
 /// which is overwritten (collective).
 void assemble_solid_loads(const SolidConditions& conditions, const MaterialTable& materials,

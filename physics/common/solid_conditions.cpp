@@ -46,12 +46,6 @@ void add_solid_condition_parameters(ParameterSpec& spec) {
   spec.named_sublists("Probes", probe, "Displacements written to <step>_probes.csv.");
 }
 
-namespace {
-
-std::array<double, 3> vector3(const Teuchos::Array<double>& values) {
-  return {values[0], values[1], values[2]};
-}
-
 std::vector<int> parse_components(const std::string& letters, const std::string& deck,
                                   const std::string& path) {
   std::vector<int> components;
@@ -66,6 +60,12 @@ std::vector<int> parse_components(const std::string& letters, const std::string&
   if (components.empty())
     throw_input_error(deck, path, "is empty", "the letters x, y and z");
   return components;
+}
+
+namespace {
+
+std::array<double, 3> vector3(const Teuchos::Array<double>& values) {
+  return {values[0], values[1], values[2]};
 }
 
 template <typename Body>

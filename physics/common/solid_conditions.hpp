@@ -69,6 +69,11 @@ struct SolidConditions {
 /// Adds Displacements, Surface loads, Nodal forces, Gravity, Ties and Probes to \p spec.
 void add_solid_condition_parameters(ParameterSpec& spec);
 
+/// Component indices (0 = x, 1 = y, 2 = z) of a deck string of letters such as "xz". Throws
+/// InputError naming \p deck and \p path for other letters or an empty string.
+std::vector<int> parse_components(const std::string& letters, const std::string& deck,
+                                  const std::string& path);
+
 /// Reads the conditions from a validated step list. Throws InputError (naming \p deck and the
 /// step \p path) for combinations the spec cannot express: a surface load with none or several
 /// of traction, pressure and total force; bad component letters; invalid expressions.

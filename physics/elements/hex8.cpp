@@ -119,6 +119,31 @@ void hex8_body_force(const double x[8][3], const double b[3], double* forces) {
   }
 }
 
+void hex8_mass(const double x[8][3], double density, bool lumped, double* mass) {
+  const Hex8GaussTable& table = hex8_gauss_table();
+  double gradient[3][8];
+  double nodal[8][8] = {};
+  for (int q = 0; q < 8; ++q) {
+    const double weight = density * hex8_gradients(x, table.dN[q], gradient);
+    for (int a = 0; a < 8; ++a) {
+      for (int b = 0; b < 8; ++b)
+        nodal[a][b] += weight * table.N[q][a] * table.N[q][b];
+    }
+  }
+  for (int k = 0; k < 24 * 24; ++k)
+    mass[k] = 0;
+  for (int a = 0; a < 8; ++a) {
+    double row_sum = 0;
+    for (int b = 0; b < 8; ++b)
+      row_sum += nodal[a][b];
+    for (int b = 0; b < 8; ++b) {
+      const double value = lumped ? (a == b ? row_sum : 0.0) : nodal[a][b];
+      for (int d = 0; d < 3; ++d)
+        mass[(3 * a + d) * 24 + 3 * b + d] = value;
+    }
+  }
+}
+
 double hex8_volume(const double x[8][3]) {
   const Hex8GaussTable& table = hex8_gauss_table();
   double gradient[3][8];

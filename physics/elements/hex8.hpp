@@ -24,6 +24,11 @@ void hex8_stiffness(const double x[8][3], const LameConstants& material, double*
 /// Consistent nodal forces (24) of a uniform body force density \p b (N/m³): f = ∫ Nᵀ b dV.
 void hex8_body_force(const double x[8][3], const double b[3], double* forces);
 
+/// Mass matrix (24 × 24, row-major) of density \p density (kg/m³): consistent,
+/// M = ∫ ρ NᵀN dV with 2×2×2 Gauss points (exact for parallelepipeds), or, when \p lumped, its
+/// row sums on the diagonal (positive for hex8, and the total mass is kept exactly).
+void hex8_mass(const double x[8][3], double density, bool lumped, double* mass);
+
 /// Volume of the element (m³).
 double hex8_volume(const double x[8][3]);
 

@@ -3,8 +3,10 @@
 /// Comparing two results directories file by file, as exodiff would (Debian has none): every
 /// number in every CSV, every value of every Exodus variable at every output time.
 
+#include <algorithm>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace railfe {
 
@@ -17,6 +19,13 @@ namespace railfe {
 struct DiffTolerance {
   double relative = 1e-8;  ///< normwise relative tolerance
   double floor = 0.0;      ///< absolute floor
+  /// CSV columns and Exodus variables not compared: quantities a method leaves arbitrary (the
+  /// split of a rigid-body eigenspace into modes).
+  std::vector<std::string> ignored;
+  /// Whether \p name is ignored.
+  bool ignores(const std::string& name) const {
+    return std::find(ignored.begin(), ignored.end(), name) != ignored.end();
+  }
 };
 
 /// Compares every *.csv and *.exo file of \p reference with the file of the same name in

@@ -1,0 +1,50 @@
+#pragma once
+/// \file
+/// Hex8 meshes of bodies of revolution (wheels, rings, axles), made by revolving a quadrilateral
+/// mesh of the cross-section about the global y axis. Railfe's axes are x along the track, y
+/// lateral and z up, so a wheel turns about y: the section point (r, a) at angle θ lands at
+/// (x, y, z) = (r cos θ, a, r sin θ). The mesh is cyclic-symmetric: every slice is the same.
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "framework/mesh/mesh.hpp"
+
+namespace railfe {
+
+/// Name and Exodus id of one region of a section; it becomes an element block.
+struct SectionBlock {
+  std::string name;  ///< block name used in decks
+  int id = 0;        ///< Exodus block id
+};
+
+/// A planar quadrilateral mesh of a cross-section in (r, a): distance from the axis and position
+/// along it. Node sets are named groups of section nodes (the curve of a bore, of a tread...).
+struct SectionMesh {
+  std::string source;                             ///< where it came from, for messages
+  std::vector<double> coordinates;                ///< r, a of node i at 2i, 2i + 1 (m)
+  std::vector<std::array<GlobalIndex, 4>> quads;  ///< corners, in order around, either sense
+  std::vector<int> quad_blocks;                   ///< index into blocks of each quad
+  std::vector<SectionBlock> blocks;               ///< the regions
+  std::vector<NodeSet> node_sets;                 ///< named groups of section nodes
+
+  /// Number of section nodes.
+  GlobalIndex n_nodes() const { return static_cast<GlobalIndex>(coordinates.size() / 2); }
+  /// Area of the section (sum of the quads' areas; straight edges).
+  double area() const;
+};
+
+/// Revolves \p section through 360° in \p n_around equal slices and merges the seam, giving
+/// exactly n_around × section.n_nodes() nodes: node i of the section at slice k (θ = 2πk /
+/// n_around) is node k · section.n_nodes() + i. Each quad gives one hex per slice, its nodes
+/// ordered so the Jacobian is positive (quads may come in either sense); blocks keep the
+/// section's names and ids, with elements numbered slice by slice. Every section node set
+/// becomes the node set of all its revolved nodes, and, where two of its nodes bound a section
+/// edge on the boundary, also a side set of the same name covering those revolved faces.
+/// Each slice spans a chord rather than an arc, so for any section the volume is n sin(2π/n)/2π
+/// of the exact body's (1 − (2π/n)²/6 to leading order). Throws InputError naming section.source
+/// when a node has r ≤ 0 or \p n_around < 3.
+Mesh revolve(const SectionMesh& section, int n_around);
+
+}  // namespace railfe

@@ -1,0 +1,341 @@
+#include "physics/modal/modal_step.hpp"
+
+#include <Teuchos_Array.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_MultiVector.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "framework/assembly/fe_matrix.hpp"
+#include "framework/assembly/linear_constraints.hpp"
+#include "framework/base/error.hpp"
+#include "framework/base/resources.hpp"
+#include "framework/deck/validation.hpp"
+#include "framework/output/csv_writer.hpp"
+#include "framework/output/field_gather.hpp"
+#include "physics/common/solid_assembly.hpp"
+#include "physics/common/solid_conditions.hpp"
+#include "physics/modal/mode_normalization.hpp"
+#include "physics/modal/shift_invert.hpp"
+#include "physics/modal/sturm_count.hpp"
+
+namespace railfe {
+
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586;
+
+// σ from the deck's signed shift frequency.
+double shift_eigenvalue(double frequency) {
+  const double omega = kTwoPi * frequency;
+  return frequency < 0 ? -omega * omega : omega * omega;
+}
+
+double frequency_of(double eigenvalue) {
+  const double f = std::sqrt(std::abs(eigenvalue)) / kTwoPi;
+  return eigenvalue < 0 ? -f : f;
+}
+
+std::unique_ptr<LinearSolver> inner_solver(const std::string& method) {
+  Teuchos::ParameterList list;
+  validate_and_complete(list, *linear_solver_parameters().list(), "", "");
+  list.set("Method", method);
+  list.set("Preconditioner", std::string("muelu-sa"));
+  list.set("Relative tolerance", 1e-12);
+  return create_linear_solver(list);
+}
+
+// Sets each record's status; returns the number of failed or missing modes.
+int judge_modes(const Teuchos::ParameterList& p, const ShiftInvertResult& result,
+                std::vector<ModeRecord>& records) {
+  const double residual_limit = p.get<double>("Backward error limit");
+  const double orthogonality_limit = p.get<double>("Orthogonality limit");
+  int n_failed = 0;
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    ModeRecord& record = records[i];
+    std::ostringstream status;
+    if (!(record.check.backward_error <= residual_limit)) {
+      status << "failed: backward error " << record.check.backward_error;
+    } else if (!(record.check.orthogonality <= orthogonality_limit)) {
+      status << "failed: M-orthogonality defect " << record.check.orthogonality;
+    } else if (record.rigid) {
+      status << "ok (rigid-body mode)";
+    } else if (record.shape.nodal_diameters >= 1 && record.check.partner < 0) {
+      // A body of revolution has its n >= 1 modes in pairs; a lone one means the solver
+      // missed its partner, unless the partner lies just above the last mode computed.
+      if (i + 1 < records.size())
+        status << "failed: doublet partner missing";
+      else
+        status << "ok (doublet partner above the last mode)";
+    } else {
+      status << "ok";
+    }
+    record.status = status.str();
+    n_failed += record.status.rfind("failed", 0) == 0 ? 1 : 0;
+  }
+  if (!result.converged) {
+    n_failed += std::max(0, result.n_requested - static_cast<int>(result.eigenvalues.size()));
+  }
+  return n_failed;
+}
+
+// Compares the number of eigenvalues below a point just above \p highest (between it and the
+// next returned eigenvalue) with the number returned there; returns the number missed.
+int sturm_check(const TpetraMatrix& K, const TpetraMatrix& M,
+                const std::vector<double>& eigenvalues, double highest, const std::string& section,
+                RunSummary& summary) {
+  double sigma = highest + 1e-4 * std::abs(highest);
+  for (double lambda : eigenvalues) {
+    if (lambda > highest) {
+      sigma = std::min(sigma, 0.5 * (highest + lambda));
+      break;
+    }
+  }
+  const long long expected = count_eigenvalues_below(K, M, sigma);
+  long long found = 0;
+  for (double lambda : eigenvalues)
+    found += lambda < sigma ? 1 : 0;
+  summary.add(section,
+              "Sturm check: eigenvalues below " + CsvWriter::format(frequency_of(sigma)) + " Hz",
+              std::to_string(expected) + " exist, " + std::to_string(found) + " found");
+  return static_cast<int>(std::max(0LL, expected - found));
+}
+
+}  // namespace
+
+ModalStep::ModalStep(const Teuchos::ParameterList& parameters) : parameters_(&parameters) {}
+
+void ModalStep::check(const CheckContext& context) {
+  const Mesh& mesh = context.model.mesh();
+  const std::string& deck = context.source();
+  const std::string& path = context.path;
+  if (!context.model.has_section("Materials")) {
+    throw_input_error(deck, "Materials",
+                      "missing: the modal step '" + context.step_name +
+                          "' needs a material for every solid block",
+                      "a Materials section");
+  }
+  materials_.emplace(context.model.section("Materials"), mesh, deck);
+  materials_->require_solid_blocks(mesh, deck, "Materials");
+  for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
+    if (materials_->has_material(static_cast<int>(b)) &&
+        !(materials_->of_block(static_cast<int>(b)).density > 0)) {
+      throw_input_error(deck, "Materials", "block '" + mesh.blocks[b].name + "' has no density",
+                        "a positive Density for every block of a modal analysis");
+    }
+  }
+
+  supports_.clear();
+  const auto& supports = parameters_->sublist("Supports");
+  for (auto it = supports.begin(); it != supports.end(); ++it) {
+    const std::string name = supports.name(it);
+    const auto& list = supports.sublist(name);
+    const std::string where = path + "/Supports/" + name;
+    ModalSupport support{
+        name, list.get<std::string>("Node set"),
+        parse_components(list.get<std::string>("Components"), deck, where + "/Components")};
+    mesh.node_set(support.node_set, deck, where + "/Node set");
+    supports_.push_back(support);
+  }
+
+  const auto& band = parameters_->get<Teuchos::Array<double>>("Frequency band");
+  if (!band.empty() && !(band[0] < band[1])) {
+    throw_input_error(deck, path + "/Frequency band", "low end is not below the high end",
+                      "{low, high} with low < high (Hz)");
+  }
+
+  const auto& classification = parameters_->sublist("Classification");
+  classify_ = classification.get<bool>("Axisymmetric");
+  const auto& origin = classification.get<Teuchos::Array<double>>("Axis origin");
+  const auto& axis = classification.get<Teuchos::Array<double>>("Axis direction");
+  const auto& web = classification.get<Teuchos::Array<double>>("Web radii");
+  frame_.origin = {origin[0], origin[1], origin[2]};
+  frame_.axis = {axis[0], axis[1], axis[2]};
+  if (std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]) == 0) {
+    throw_input_error(deck, path + "/Classification/Axis direction", "is the zero vector",
+                      "a non-zero direction, e.g. {0, 1, 0}");
+  }
+  classifier_.rim_fraction = classification.get<double>("Rim fraction");
+  classifier_.web_inner_radius = web[0];
+  classifier_.web_outer_radius = web[1];
+  classifier_.dominance = classification.get<double>("Dominance");
+  classifier_.family_dominance = classification.get<double>("Family dominance");
+  classifier_.noise_fraction = classification.get<double>("Noise fraction");
+
+  references_.clear();
+  const auto& references = parameters_->sublist("References");
+  for (auto it = references.begin(); it != references.end(); ++it) {
+    const std::string name = references.name(it);
+    const auto& list = references.sublist(name);
+    references_.push_back({name, list.get<std::string>("Family"), list.get<int>("Nodal circles"),
+                           list.get<int>("Nodal diameters"), list.get<double>("Frequency")});
+  }
+  if (!references_.empty() && !classify_) {
+    throw_input_error(deck, path + "/References",
+                      "needs classified modes to find the computed mode of each reference",
+                      "Classification/Axisymmetric = true");
+  }
+}
+
+void ModalStep::run(StepContext& context) {
+  Model& model = context.model;
+  const DofMap& dofs = model.dofs(3);
+  const Communicator& comm = model.comm();
+  const std::string section = "Step " + context.step_name + " (modal)";
+  RunSummary& summary = context.summary;
+  const Teuchos::ParameterList& p = *parameters_;
+
+  Stopwatch clock;
+  FeMatrix stiffness(dofs);
+  FeMatrix mass(dofs);
+  assemble_elastic_stiffness(stiffness, *materials_);
+  assemble_mass(mass, *materials_, p.get<std::string>("Mass") == "lumped");
+  LinearConstraints constraints(dofs, context.source());
+  for (const auto& support : supports_) {
+    for (GlobalIndex node : model.mesh().node_set(support.node_set, "", "").nodes) {
+      if (model.partition().node_ranks()[node] != comm.rank())
+        continue;
+      for (int c : support.components)
+        constraints.prescribe(3 * node + c, 0.0);
+    }
+  }
+  constraints.finalize();
+  TpetraVector no_load(dofs.owned_map());
+  const Teuchos::RCP<const TpetraMatrix> K = constraints.apply(stiffness.matrix(), no_load);
+  constraints.remove_prescribed(*mass.matrix());
+  const Teuchos::RCP<const TpetraMatrix> M = mass.matrix();
+  const double assembly_seconds = clock.seconds();
+
+  const auto inner = inner_solver(p.get<std::string>("Inner solver"));
+  Progress factor_progress = context.progress("factorization of K - sigma M", 1);
+  const double shift = shift_eigenvalue(p.get<double>("Shift"));
+  const ShiftInvertEigensolver eigensolver(K, M, *inner, elasticity_traits(dofs), shift);
+  factor_progress.finish();
+
+  ShiftInvertSettings settings;
+  settings.n_modes = p.get<int>("Modes");
+  settings.block_size = p.get<int>("Block size");
+  settings.krylov_blocks = p.get<int>("Krylov blocks");
+  settings.maximum_restarts = p.get<int>("Maximum restarts");
+  settings.tolerance = p.get<double>("Tolerance");
+  const auto& band = p.get<Teuchos::Array<double>>("Frequency band");
+  const long long free_dofs = dofs.n_global_dofs() - constraints.n_prescribed();
+  ShiftInvertResult result;
+  // A band holds an unknown number of modes: ask for more until one lies above it.
+  for (int attempt = 1;; ++attempt) {
+    Progress progress =
+        context.progress("Krylov-Schur, " + std::to_string(settings.n_modes) + " modes", 1);
+    result = eigensolver.solve(settings, &progress);
+    progress.finish();
+    if (band.empty() || !result.converged || result.eigenvalues.empty())
+      break;
+    if (frequency_of(result.eigenvalues.back()) > band[1])
+      break;
+    if (2LL * settings.n_modes + 2 >= free_dofs / 2) {
+      throw RunError("the frequency band up to " + std::to_string(band[1]) +
+                     " Hz holds more modes than the model can resolve (" +
+                     std::to_string(result.eigenvalues.size()) + " found below " +
+                     std::to_string(frequency_of(result.eigenvalues.back())) + " Hz)");
+    }
+    settings.n_modes *= 2;
+  }
+
+  if (!result.vectors.is_null())
+    canonicalize_modes(
+        result.eigenvalues, *result.vectors, *K, *M, *elasticity_traits(dofs).near_null_space,
+        shift_eigenvalue(p.get<double>("Rigid-body limit")), p.get<double>("Doublet tolerance"));
+  std::vector<ModeRecord> records;
+  const auto checks = check_modes(
+      *K, *M, result.eigenvalues,
+      result.vectors.is_null() ? TpetraMultiVector(K->getDomainMap(), 1) : *result.vectors, 3,
+      p.get<double>("Doublet tolerance"));
+  std::vector<int> kept;
+  for (std::size_t i = 0; i < result.eigenvalues.size(); ++i) {
+    const double f = frequency_of(result.eigenvalues[i]);
+    const bool rigid = std::abs(f) < p.get<double>("Rigid-body limit");
+    const double f_band = rigid ? 0.0 : f;
+    if (!band.empty() && (f_band < band[0] || f_band > band[1]))
+      continue;
+    ModeRecord record;
+    record.rigid = rigid;
+    record.eigenvalue = result.eigenvalues[i];
+    // A rigid-body mode's computed frequency is round-off (its sign included); 0 is the answer.
+    record.frequency = rigid ? 0.0 : f;
+    record.check = checks[i];
+    records.push_back(record);
+    kept.push_back(static_cast<int>(i));
+  }
+  // Partners are indices into the returned set; renumber them into the kept set.
+  for (auto& record : records) {
+    const int partner = record.check.partner;
+    const auto it = std::find(kept.begin(), kept.end(), partner);
+    record.check.partner = it == kept.end() ? -1 : static_cast<int>(it - kept.begin());
+  }
+  Teuchos::RCP<TpetraMultiVector> modes;
+  if (!records.empty()) {
+    const std::vector<std::size_t> columns(kept.begin(), kept.end());
+    modes = result.vectors->subCopy(
+        Teuchos::ArrayView<const std::size_t>(columns.data(), columns.size()));
+  }
+  if (classify_ && !modes.is_null())
+    classify(model.partition(), *modes, records);
+  for (auto& record : records) {
+    if (record.rigid) {
+      record.shape = ModeClass();
+      record.shape.family = "rigid-body";
+    }
+  }
+  int n_failed = judge_modes(p, result, records);
+  if (p.get<bool>("Sturm check") && !records.empty())
+    n_failed +=
+        sturm_check(*K, *M, result.eigenvalues, records.back().eigenvalue, section, summary);
+  if (!result.converged) {
+    summary.add(section, "warning",
+                "Anasazi converged " + std::to_string(result.eigenvalues.size()) + " of " +
+                    std::to_string(result.n_requested) + " modes");
+  }
+
+  summary.add(section, "degrees of freedom", static_cast<double>(dofs.n_global_dofs()));
+  summary.add(section, "fixed DOFs", static_cast<double>(constraints.n_prescribed()));
+  summary.add(section, "mass", p.get<std::string>("Mass"));
+  summary.add(section, "eigensolver", "Anasazi block Krylov-Schur, shift-invert");
+  summary.add(section, "inner solver", p.get<std::string>("Inner solver"));
+  summary.add(section, "shift", p.get<double>("Shift"), "Hz");
+  summary.add(section, "modes requested", result.n_requested);
+  summary.add(section, "modes converged", static_cast<double>(result.eigenvalues.size()));
+  summary.add(section, "modes reported", static_cast<double>(records.size()));
+  summary.add(section, "Krylov space", result.krylov_dimension);
+  summary.add(section, "iterations", result.restarts);
+  summary.add(section, "operator applications", static_cast<double>(result.operator_applies));
+  summary.add(section, "modes failing checks", n_failed);
+  double worst_residual = 0, worst_orthogonality = 0;
+  for (const auto& record : records) {
+    worst_residual = std::max(worst_residual, record.check.backward_error);
+    worst_orthogonality = std::max(worst_orthogonality, record.check.orthogonality);
+  }
+  summary.add(section, "largest backward error", worst_residual);
+  summary.add(section, "largest M-orthogonality defect", worst_orthogonality);
+  summary.add(section, "time: assembly of K and M", assembly_seconds, "s");
+  summary.add(section, "time: factorization", result.factor_seconds, "s");
+  summary.add(section, "time: eigensolver iterations", result.iteration_seconds, "s");
+
+  clock.restart();
+  write_results(context, records, modes.get());
+  if (!references_.empty())
+    write_validation(context, records);
+  if (p.get<bool>("Export matrices"))
+    export_matrices(context, *K, *M);
+  summary.add(section, "time: output", clock.seconds(), "s");
+
+  if (n_failed > 0 && p.get<std::string>("On failed check") == "error") {
+    throw RunError(std::to_string(n_failed) + " of " + std::to_string(records.size()) +
+                   " modes failed their checks (see the status column of " + context.step_name +
+                   "_modes.csv); raise Krylov blocks, change the shift, or set On failed check = "
+                   "warn to keep the results");
+  }
+}
+
+}  // namespace railfe

@@ -1,0 +1,68 @@
+#pragma once
+/// \file
+/// One modal analysis (see modal_module.hpp).
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "framework/app/module.hpp"
+#include "physics/materials/elastic_material.hpp"
+#include "physics/modal/mode_checks.hpp"
+#include "physics/modal/mode_classifier.hpp"
+
+namespace railfe {
+
+/// A fixed node set of a modal step.
+struct ModalSupport {
+  std::string name;             ///< its name in the deck
+  std::string node_set;         ///< the nodes
+  std::vector<int> components;  ///< fixed components (0 = x, 1 = y, 2 = z)
+};
+
+/// A reference frequency to compare a computed mode with.
+struct ReferenceMode {
+  std::string name;         ///< its name in the deck
+  std::string family;       ///< axial, radial or circumferential
+  int nodal_circles = 0;    ///< m
+  int nodal_diameters = 0;  ///< n
+  double frequency = 0;     ///< Hz
+};
+
+/// Everything known about one returned mode, for the output files.
+struct ModeRecord {
+  double eigenvalue = 0;  ///< λ = ω² (rad²/s²)
+  double frequency = 0;   ///< sign(λ) √|λ| / 2π (Hz); 0 for rigid-body modes
+  ModeCheck check;        ///< residual, orthogonality, masses, partner
+  ModeClass shape;        ///< classification (family "" when not classified)
+  std::string status;     ///< "ok", or what failed
+  bool rigid = false;     ///< below the rigid-body limit
+};
+
+/// A modal analysis step.
+class ModalStep : public AnalysisStep {
+ public:
+  /// A step configured by its validated parameter list.
+  explicit ModalStep(const Teuchos::ParameterList& parameters);
+  void check(const CheckContext& context) override;
+  void run(StepContext& context) override;
+
+ private:
+  void classify(const MeshPartition& partition, const TpetraMultiVector& modes,
+                std::vector<ModeRecord>& records) const;
+  void write_results(StepContext& context, const std::vector<ModeRecord>& records,
+                     const TpetraMultiVector* modes) const;
+  void write_validation(StepContext& context, const std::vector<ModeRecord>& records) const;
+  static void export_matrices(StepContext& context, const TpetraMatrix& K, const TpetraMatrix& M);
+  void draw_chart(StepContext& context, const std::string& csv_path) const;
+
+  const Teuchos::ParameterList* parameters_;
+  std::optional<MaterialTable> materials_;
+  std::vector<ModalSupport> supports_;
+  std::vector<ReferenceMode> references_;
+  AxisymmetricFrame frame_;
+  ClassifierSettings classifier_;
+  bool classify_ = false;
+};
+
+}  // namespace railfe

@@ -1,0 +1,181 @@
+#include "physics/modal/shift_invert.hpp"
+
+#include <AnasaziBasicEigenproblem.hpp>
+#include <AnasaziBlockKrylovSchurSolMgr.hpp>
+#include <AnasaziTpetraAdapter.hpp>
+#include <TpetraExt_MatrixMatrix.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_MultiVector.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "framework/base/error.hpp"
+#include "framework/base/resources.hpp"
+
+namespace railfe {
+
+namespace {
+
+using Eigenproblem = Anasazi::BasicEigenproblem<double, TpetraMultiVector, TpetraOperator>;
+
+// Y = (K − σM)⁻¹ M X, through the inner solver's factorization.
+class ShiftInvertOperator : public TpetraOperator {
+ public:
+  ShiftInvertOperator(Teuchos::RCP<const TpetraMatrix> M, LinearSolver& inner, Progress* progress,
+                      long long expected_applies)
+      : M_(std::move(M)), inner_(inner), progress_(progress), expected_(expected_applies) {}
+
+  Teuchos::RCP<const TpetraMap> getDomainMap() const override { return M_->getDomainMap(); }
+  Teuchos::RCP<const TpetraMap> getRangeMap() const override { return M_->getRangeMap(); }
+
+  void apply(const TpetraMultiVector& X, TpetraMultiVector& Y, Teuchos::ETransp mode, double alpha,
+             double beta) const override {
+    (void)mode;  // the operator is M-self-adjoint; Anasazi never asks for the transpose
+    TpetraMultiVector mass_times_x(M_->getRangeMap(), X.getNumVectors());
+    M_->apply(X, mass_times_x);
+    TpetraMultiVector solution(M_->getDomainMap(), X.getNumVectors());
+    inner_.solve_block(mass_times_x, solution);
+    Y.update(alpha, solution, beta);
+    applies_ += static_cast<long long>(X.getNumVectors());
+    if (progress_ != nullptr)
+      progress_->update(std::min(applies_, expected_));
+  }
+
+  long long applies() const { return applies_; }
+
+ private:
+  Teuchos::RCP<const TpetraMatrix> M_;
+  LinearSolver& inner_;
+  Progress* progress_;
+  long long expected_;
+  mutable long long applies_ = 0;
+};
+
+// A random block that does not depend on the number of ranks: each entry is a hash of its global
+// index and column, so runs on 1 and 2 ranks start from the same vectors.
+void fill_reproducible_random(TpetraMultiVector& block, unsigned seed) {
+  const auto& map = *block.getMap();
+  for (std::size_t j = 0; j < block.getNumVectors(); ++j) {
+    auto column = block.getDataNonConst(j);
+    for (decltype(column.size()) i = 0; i < column.size(); ++i) {
+      unsigned long long h =
+          static_cast<unsigned long long>(map.getGlobalElement(i)) * 0x9E3779B97F4A7C15ull;
+      h ^= (j + 1) * 0xBF58476D1CE4E5B9ull + seed;
+      h ^= h >> 31;
+      h *= 0x94D049BB133111EBull;
+      h ^= h >> 29;
+      column[i] = static_cast<double>(h >> 11) / 9007199254740992.0 - 0.5;
+    }
+  }
+}
+
+}  // namespace
+
+ShiftInvertEigensolver::ShiftInvertEigensolver(Teuchos::RCP<const TpetraMatrix> K,
+                                               Teuchos::RCP<const TpetraMatrix> M,
+                                               LinearSolver& inner, const ProblemTraits& traits,
+                                               double shift)
+    : K_(std::move(K)), M_(std::move(M)), inner_(inner), shift_(shift) {
+  Stopwatch clock;
+  shifted_ = Tpetra::MatrixMatrix::add(1.0, false, *K_, -shift_, false, *M_);
+  inner_.setup(shifted_, traits);
+  factor_seconds_ = clock.seconds();
+}
+
+ShiftInvertResult ShiftInvertEigensolver::solve(const ShiftInvertSettings& settings,
+                                                Progress* progress) const {
+  const auto& K = K_;
+  const auto& M = M_;
+  ShiftInvertResult result;
+  result.n_requested = settings.n_modes;
+  result.factor_seconds = factor_seconds_;
+  const auto n_global = static_cast<long long>(K->getGlobalNumRows());
+  if (settings.n_modes < 1)
+    throw RunError("the eigensolver was asked for " + std::to_string(settings.n_modes) + " modes");
+  Stopwatch clock;
+
+  const int block_size = settings.block_size;
+  int blocks = settings.krylov_blocks;
+  if (blocks <= 0) {
+    const int wanted = std::max(2 * settings.n_modes, settings.n_modes + 20);
+    blocks = (wanted + block_size - 1) / block_size;
+  }
+  // A Krylov space cannot exceed the problem; Anasazi needs nev < blocks × block size.
+  const long long largest_blocks = std::max(2LL, (n_global - 1) / block_size);
+  blocks = static_cast<int>(std::min<long long>(blocks, largest_blocks));
+  result.krylov_dimension = blocks * block_size;
+  // Krylov-Schur keeps the wanted Ritz vectors plus at least one block to extend them.
+  const int wanted_blocks = (settings.n_modes + block_size - 1) / block_size;
+  if (blocks <= wanted_blocks) {
+    throw RunError("asked for " + std::to_string(settings.n_modes) + " modes with blocks of " +
+                   std::to_string(block_size) + " vectors, which needs more than " +
+                   std::to_string(wanted_blocks) + " Krylov blocks; the space has " +
+                   std::to_string(blocks) +
+                   " (raise Krylov blocks, or 0 for automatic; the model has " +
+                   std::to_string(n_global) + " DOFs)");
+  }
+
+  auto op = Teuchos::rcp(new ShiftInvertOperator(M, inner_, progress,
+                                                 static_cast<long long>(result.krylov_dimension)));
+  // Start from (K − σM)⁻¹ M R: smooth, and zero wherever M has no mass (prescribed DOFs).
+  TpetraMultiVector random(K->getDomainMap(), block_size);
+  fill_reproducible_random(random, settings.seed);
+  auto start = Teuchos::rcp(new TpetraMultiVector(K->getDomainMap(), block_size));
+  op->apply(random, *start, Teuchos::NO_TRANS, 1.0, 0.0);
+
+  auto problem = Teuchos::rcp(new Eigenproblem(op, M, start));
+  problem->setHermitian(true);
+  problem->setNEV(settings.n_modes);
+  if (!problem->setProblem())
+    throw RunError("Anasazi rejected the eigenproblem set-up");
+
+  Teuchos::ParameterList anasazi;
+  anasazi.set("Which", std::string("LM"));
+  anasazi.set("Block Size", block_size);
+  anasazi.set("Num Blocks", blocks);
+  anasazi.set("Maximum Restarts", settings.maximum_restarts);
+  anasazi.set("Convergence Tolerance", settings.tolerance);
+  anasazi.set("Relative Convergence Tolerance", true);
+  anasazi.set("Verbosity", static_cast<int>(Anasazi::Errors));
+  Anasazi::BlockKrylovSchurSolMgr<double, TpetraMultiVector, TpetraOperator> manager(problem,
+                                                                                     anasazi);
+  clock.restart();
+  Anasazi::ReturnType status = Anasazi::Unconverged;
+  try {
+    status = manager.solve();
+  } catch (const std::exception& error) {
+    throw RunError("the Krylov-Schur eigensolver failed: " + essential_line(error.what()));
+  }
+  result.iteration_seconds = clock.seconds();
+  result.converged = status == Anasazi::Converged;
+  result.restarts = manager.getNumIters();
+  result.operator_applies = op->applies();
+
+  const auto& solution = problem->getSolution();
+  const int n_found = solution.numVecs;
+  // θ = 1/(λ − σ) for the inverted operator; sort the λ ascending.
+  std::vector<double> lambdas(n_found);
+  for (int i = 0; i < n_found; ++i)
+    lambdas[i] = shift_ + 1.0 / solution.Evals[i].realpart;
+  std::vector<int> order(n_found);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return lambdas[a] < lambdas[b]; });
+  result.vectors = Teuchos::rcp(new TpetraMultiVector(K->getDomainMap(), std::max(n_found, 1)));
+  TpetraVector mass_times_phi(M->getRangeMap());
+  for (int k = 0; k < n_found; ++k) {
+    result.eigenvalues.push_back(lambdas[order[k]]);
+    auto column = result.vectors->getVectorNonConst(k);
+    column->update(1.0, *solution.Evecs->getVector(order[k]), 0.0);
+    M->apply(*column, mass_times_phi);
+    const double modal_mass = column->dot(mass_times_phi);
+    if (modal_mass > 0)
+      column->scale(1.0 / std::sqrt(modal_mass));
+  }
+  if (n_found == 0)
+    result.vectors = Teuchos::null;
+  return result;
+}
+
+}  // namespace railfe

@@ -1,0 +1,171 @@
+// The wheel mesh generator: volume against Pappus' theorem on the section outline, sets, the
+// running circle at the nominal radius, the half axle, refused dimensions, Mesh/Type wheel.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+#include "contact/geometry/profile_file.hpp"
+#include "framework/base/error.hpp"
+#include "framework/deck/deck.hpp"
+#include "framework/deck/validation.hpp"
+#include "framework/mesh/hex8_shape.hpp"
+#include "framework/mesh/mesh_checks.hpp"
+#include "physics/parts/wheel_mesh.hpp"
+
+namespace railfe {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::string input_error(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+double volume(const Mesh& mesh, const std::string& block_name) {
+  const auto& table = hex8_gauss_table();
+  double sum = 0;
+  const auto& block = mesh.blocks[mesh.block_index(block_name, "", "")];
+  for (GlobalIndex e = 0; e < block.n_elements(); ++e) {
+    double x[8][3], gradient[3][8];
+    for (int a = 0; a < 8; ++a) {
+      for (int d = 0; d < 3; ++d)
+        x[a][d] = mesh.coordinates[3 * block.element_nodes(e)[a] + d];
+    }
+    for (int q = 0; q < 8; ++q)
+      sum += hex8_gradients(x, table.dN[q], gradient);
+  }
+  return sum;
+}
+
+// Pappus: 2π ∫ r dA over the polygon (the tread through every profile point).
+double pappus_volume(const std::vector<std::array<double, 2>>& outline) {
+  double first_moment = 0;  // ∫ r dA
+  for (std::size_t i = 0; i < outline.size(); ++i) {
+    const auto& p = outline[i];
+    const auto& q = outline[(i + 1) % outline.size()];
+    first_moment += (p[0] * q[1] - q[0] * p[1]) * (p[0] + q[0]) / 6;
+  }
+  return 2 * kPi * first_moment;
+}
+
+WheelDimensions coarse() {
+  WheelDimensions d;
+  d.profile_file = shipped_profile("MBench_S1002_v3.prw");
+  d.element_size = 0.02;
+  return d;
+}
+
+TEST(WheelMesh, VolumeSetsAndRunningCircle) {
+  const WheelDimensions d = coarse();
+  const Mesh mesh = build_wheel_mesh(d, "test");
+  EXPECT_NO_THROW(check_mesh(mesh));
+  const int n = wheel_elements_around(d);
+  EXPECT_EQ(n, 148);  // π · 920 mm / 20 mm = 144.5, up to a multiple of 4
+  EXPECT_EQ(mesh.n_nodes() % n, 0);
+  // The slices' chords lose 1 − n sin(2π/n)/2π = 3.0e-4 of the volume, a known factor; what is
+  // left is the section mesh's chords across the curved tread: 1.7e-3 at 20 mm, 6.5e-4 at 10 mm,
+  // 2.1e-4 at 5 mm.
+  const double exact = pappus_volume(wheel_section(d, "test").wheel);
+  const double chord_factor = n * std::sin(2 * kPi / n) / (2 * kPi);
+  EXPECT_NEAR(volume(mesh, "wheel") / (chord_factor * exact), 1, 2.5e-3);
+  const double mass = 7850 * volume(mesh, "wheel");
+  EXPECT_GT(mass, 250);  // 341 kg; solid 920 mm wheels weigh roughly 300-400 kg
+  EXPECT_LT(mass, 450);
+
+  for (const char* name : {"tread", "bore", "running_circle"}) {
+    EXPECT_GT(mesh.node_set(name, "", "").nodes.size(), 0u) << name;
+  }
+  EXPECT_EQ(mesh.node_set("running_circle", "", "").nodes.size(), static_cast<std::size_t>(n));
+  for (GlobalIndex node : mesh.node_set("running_circle", "", "").nodes) {
+    const auto x = mesh.node(node);
+    EXPECT_NEAR(std::hypot(x[0], x[2]), 0.46, 1e-12);
+    EXPECT_NEAR(x[1], 0, 1e-15);
+  }
+  // The tread's nodes reach from the outer chamfer to the flange back (y = 69.6 mm), and the
+  // flange tip stands 28 mm above the running circle.
+  double a_min = 1, a_max = -1, r_max = 0;
+  for (GlobalIndex node : mesh.node_set("tread", "", "").nodes) {
+    const auto x = mesh.node(node);
+    a_min = std::min(a_min, x[1]);
+    a_max = std::max(a_max, x[1]);
+    r_max = std::max(r_max, std::hypot(x[0], x[2]));
+  }
+  EXPECT_NEAR(a_min, -0.060, 1e-9);
+  EXPECT_NEAR(a_max, 0.069612628, 1e-9);
+  EXPECT_LE(r_max, 0.46 + 0.028 + 1e-9);
+  EXPECT_GT(r_max, 0.46 + 0.025);  // a 20 mm mesh cuts across the tip's rounding
+  EXPECT_GT(mesh.side_set("tread", "", "").sides.size(), 0u);
+  for (GlobalIndex node : mesh.node_set("bore", "", "").nodes) {
+    const auto x = mesh.node(node);
+    EXPECT_NEAR(std::hypot(x[0], x[2]), 0.0975, 1e-12);
+  }
+}
+
+TEST(WheelMesh, HalfAxle) {
+  WheelDimensions d = coarse();
+  d.half_axle = true;
+  d.elements_around = 40;
+  const Mesh mesh = build_wheel_mesh(d, "test");
+  EXPECT_NO_THROW(check_mesh(mesh));
+  EXPECT_FALSE(mesh.has_node_set("bore"));
+  const auto& end = mesh.node_set("axle_end", "", "").nodes;
+  EXPECT_GT(end.size(), 0u);
+  for (GlobalIndex node : end)
+    EXPECT_NEAR(mesh.node(node)[1], 0.75, 1e-12);
+  const double chord_factor = 40 * std::sin(2 * kPi / 40) / (2 * kPi);
+  const WheelSection section = wheel_section(d, "test");
+  EXPECT_NEAR(volume(mesh, "axle") / (chord_factor * pappus_volume(section.axle)), 1, 1e-12);
+  EXPECT_NEAR(volume(mesh, "wheel") / (chord_factor * pappus_volume(section.wheel)), 1, 2.5e-3);
+}
+
+TEST(WheelMesh, RefusesDimensionsThatMakeNoWheel) {
+  WheelDimensions d = coarse();
+  d.rim_width = 0.12;
+  auto message = input_error([&] { wheel_section(d, "deck.xml"); });
+  EXPECT_NE(message.find("deck.xml: 'Mesh/Wheel/Rim width'"), std::string::npos) << message;
+  d = coarse();
+  d.web_thickness = 0.2;
+  message = input_error([&] { wheel_section(d, "deck.xml"); });
+  EXPECT_NE(message.find("Web thickness"), std::string::npos) << message;
+  d = coarse();
+  d.half_axle = true;
+  d.axle_diameter = 0.2;
+  message = input_error([&] { wheel_section(d, "deck.xml"); });
+  EXPECT_NE(message.find("Axle diameter"), std::string::npos) << message;
+  d = coarse();
+  d.profile_file = "no_such_profile.prw";
+  message = input_error([&] { wheel_section(d, "deck.xml"); });
+  EXPECT_NE(message.find("not found"), std::string::npos) << message;
+}
+
+TEST(WheelMesh, MeshTypeWheelInADeck) {
+  const std::string xml = R"(<ParameterList name="railfe"><ParameterList name="Mesh">
+    <Parameter name="Type" type="string" value="wheel"/>
+    <ParameterList name="Wheel">
+      <Parameter name="Element size" type="double" value="0.03"/>
+      <Parameter name="Elements around" type="int" value="24"/>
+    </ParameterList></ParameterList></ParameterList>)";
+  Deck deck = parse_deck(xml, "wheel.xml", ".");
+  auto& section = deck.parameters->sublist("Mesh");
+  const std::vector<MeshGeneratorDescriptor> generators = {wheel_mesh_generator()};
+  validate_and_complete(section, *mesh_parameters(generators).list(), deck.source, "Mesh");
+  const Mesh mesh = build_mesh(section, deck, generators);
+  EXPECT_EQ(mesh.n_elements() % 24, 0);
+  EXPECT_EQ(mesh.source, "wheel.xml: Mesh/Wheel");
+
+  Deck other = parse_deck(xml, "wheel.xml", ".");
+  const auto message = input_error([&] {
+    validate_and_complete(other.parameters->sublist("Mesh"), *mesh_parameters().list(), "d",
+                          "Mesh");
+  });
+  EXPECT_NE(message.find("Mesh/Type"), std::string::npos) << message;
+}
+
+}  // namespace
+}  // namespace railfe
