@@ -12,6 +12,7 @@ packages=(
   libeigen3-dev libmuparser-dev                     # small dense element math; deck expressions
   libopenmpi-dev openmpi-bin libgtest-dev
   gmsh python3 python3-matplotlib python3-numpy     # meshing; charts and studies
+  python3-scipy                                     # modal benchmark reference (eigsh)
 )
 
 missing=()

@@ -40,7 +40,8 @@ ParameterSpec modal_parameters() {
   ParameterSpec spec("Natural frequencies and mode shapes of hex8 solids (K phi = omega^2 M phi).");
   spec.integer("Modes", 10,
                "Number of lowest modes (above the shift) to compute; with a Frequency band, the "
-               "first guess of how many lie in it.",
+               "first guess of how many lie in it (a guess slightly above the true count is "
+               "fastest; too low, and further batches continue the search).",
                Range::at_least(1));
   spec.real_array("Frequency band", {},
                   "{low, high}: compute every mode in this band instead of a fixed number.", "Hz",
@@ -65,7 +66,7 @@ ParameterSpec modal_parameters() {
                "Vectors per Krylov block; 2 or more finds both members of a doublet together.",
                Range::at_least(1));
   spec.integer("Krylov blocks", 0,
-               "Blocks in the Krylov space (0 = enough for about twice the modes wanted).",
+               "Blocks in the Krylov space (0 = enough for about three times the modes wanted).",
                Range::at_least(0));
   spec.integer("Maximum restarts", 100, "Krylov-Schur restarts before giving up.",
                Range::at_least(0));

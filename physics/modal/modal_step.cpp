@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "framework/assembly/fe_matrix.hpp"
@@ -82,11 +83,41 @@ int judge_modes(const Teuchos::ParameterList& p, const ShiftInvertResult& result
   return n_failed;
 }
 
+// Adds the modes of a continuation solve to \p result, keeping eigenvalues ascending.
+void append_modes(ShiftInvertResult& result, const ShiftInvertResult& next) {
+  const std::size_t n_old = result.eigenvalues.size(), n_new = next.eigenvalues.size();
+  std::vector<std::pair<double, int>> order;  // (eigenvalue, column in old ++ new)
+  for (std::size_t i = 0; i < n_old; ++i)
+    order.emplace_back(result.eigenvalues[i], static_cast<int>(i));
+  for (std::size_t i = 0; i < n_new; ++i)
+    order.emplace_back(next.eigenvalues[i], static_cast<int>(n_old + i));
+  std::sort(order.begin(), order.end());
+  auto merged = Teuchos::rcp(new TpetraMultiVector(result.vectors->getMap(), n_old + n_new));
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const int column = order[k].second;
+    const auto source = column < static_cast<int>(n_old)
+                            ? result.vectors->getVector(column)
+                            : next.vectors->getVector(column - static_cast<int>(n_old));
+    merged->getVectorNonConst(k)->update(1.0, *source, 0.0);
+  }
+  result.eigenvalues.resize(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k)
+    result.eigenvalues[k] = order[k].first;
+  result.vectors = merged;
+  result.n_requested += next.n_requested;
+  result.restarts += next.restarts;
+  result.operator_applies += next.operator_applies;
+  result.iteration_seconds += next.iteration_seconds;
+  result.converged = next.converged;
+}
+
 // Compares the number of eigenvalues below a point just above \p highest (between it and the
 // next returned eigenvalue) with the number returned there; returns the number missed.
 int sturm_check(const TpetraMatrix& K, const TpetraMatrix& M,
-                const std::vector<double>& eigenvalues, double highest, const std::string& section,
-                RunSummary& summary) {
+                const std::vector<double>& eigenvalues, double highest, double rigid_limit,
+                const std::string& section, RunSummary& summary) {
+  // Rigid-body eigenvalues are round-off around 0: count from above the rigid-body limit.
+  highest = std::max(highest, rigid_limit);
   double sigma = highest + 1e-4 * std::abs(highest);
   for (double lambda : eigenvalues) {
     if (lambda > highest) {
@@ -210,9 +241,25 @@ void ModalStep::run(StepContext& context) {
   const double assembly_seconds = clock.seconds();
 
   const auto inner = inner_solver(p.get<std::string>("Inner solver"));
+  // Every returned eigenpair is checked against K and M below; checking each inner solve as
+  // well would cost a third of the iterations.
+  inner->check_solutions(false);
   Progress factor_progress = context.progress("factorization of K - sigma M", 1);
   const double shift = shift_eigenvalue(p.get<double>("Shift"));
-  const ShiftInvertEigensolver eigensolver(K, M, *inner, elasticity_traits(dofs), shift);
+  std::optional<ShiftInvertEigensolver> solver;
+  try {
+    solver.emplace(K, M, *inner, elasticity_traits(dofs), shift);
+  } catch (const RunError& error) {
+    if (p.get<std::string>("Inner solver") != "cholmod")
+      throw;
+    throw RunError(
+        "the shift " + CsvWriter::format(p.get<double>("Shift")) +
+        " Hz could not be used: K - sigma M must be positive definite for the "
+        "Cholesky inner solver, so the shift must lie below the lowest natural "
+        "frequency (negative for a free body, e.g. -1 Hz). CHOLMOD said: " +
+        std::string(error.what()).substr(0, std::string(error.what()).find(": the model is")));
+  }
+  const ShiftInvertEigensolver& eigensolver = *solver;
   factor_progress.finish();
 
   ShiftInvertSettings settings;
@@ -224,23 +271,30 @@ void ModalStep::run(StepContext& context) {
   const auto& band = p.get<Teuchos::Array<double>>("Frequency band");
   const long long free_dofs = dofs.n_global_dofs() - constraints.n_prescribed();
   ShiftInvertResult result;
-  // A band holds an unknown number of modes: ask for more until one lies above it.
-  for (int attempt = 1;; ++attempt) {
+  {
     Progress progress =
         context.progress("Krylov-Schur, " + std::to_string(settings.n_modes) + " modes", 1);
     result = eigensolver.solve(settings, &progress);
     progress.finish();
-    if (band.empty() || !result.converged || result.eigenvalues.empty())
-      break;
-    if (frequency_of(result.eigenvalues.back()) > band[1])
-      break;
-    if (2LL * settings.n_modes + 2 >= free_dofs / 2) {
-      throw RunError("the frequency band up to " + std::to_string(band[1]) +
-                     " Hz holds more modes than the model can resolve (" +
-                     std::to_string(result.eigenvalues.size()) + " found below " +
-                     std::to_string(frequency_of(result.eigenvalues.back())) + " Hz)");
+  }
+  // A band holds an unknown number of modes: continue in batches, each searched M-orthogonal
+  // to the modes already found, until one lies above the band. Each batch is as large as all
+  // found so far (at least Modes): small batches deep in the spectrum converge slowly.
+  while (!band.empty() && result.converged && !result.eigenvalues.empty() &&
+         frequency_of(result.eigenvalues.back()) <= band[1]) {
+    const long long n_found = static_cast<long long>(result.eigenvalues.size());
+    settings.n_modes = std::max(p.get<int>("Modes"), static_cast<int>(n_found));
+    if (n_found + settings.n_modes >= free_dofs / 2) {
+      throw RunError("the frequency band up to " + CsvWriter::format(band[1]) +
+                     " Hz holds more modes than the model can resolve (" + std::to_string(n_found) +
+                     " found below " + CsvWriter::format(frequency_of(result.eigenvalues.back())) +
+                     " Hz)");
     }
-    settings.n_modes *= 2;
+    Progress progress = context.progress("Krylov-Schur, modes " + std::to_string(n_found + 1) +
+                                             " to " + std::to_string(n_found + settings.n_modes),
+                                         1);
+    append_modes(result, eigensolver.solve(settings, &progress, result.vectors));
+    progress.finish();
   }
 
   if (!result.vectors.is_null())
@@ -290,8 +344,8 @@ void ModalStep::run(StepContext& context) {
   }
   int n_failed = judge_modes(p, result, records);
   if (p.get<bool>("Sturm check") && !records.empty())
-    n_failed +=
-        sturm_check(*K, *M, result.eigenvalues, records.back().eigenvalue, section, summary);
+    n_failed += sturm_check(*K, *M, result.eigenvalues, records.back().eigenvalue,
+                            shift_eigenvalue(p.get<double>("Rigid-body limit")), section, summary);
   if (!result.converged) {
     summary.add(section, "warning",
                 "Anasazi converged " + std::to_string(result.eigenvalues.size()) + " of " +

@@ -333,7 +333,13 @@ const CylindricalNode* node_near(const Ring& ring, const std::vector<Cylindrical
   return nearest_distance <= limit * (1 + 1e-9) ? nearest : nullptr;
 }
 
-// (radius, value of u_c) along the radial line at angle, averaged over nodes of equal radius
+// Radial bins of the nodal-circle line. Nodes through the thickness of an unstructured section
+// rarely share a radius exactly, and bending makes u_r change sign through the thickness, so
+// values are averaged over bins of this share of the line's length: fine enough for a handful of
+// nodal circles, coarse enough to span the web's thickness.
+constexpr int kRadialBins = 25;
+
+// (radius, value of u_c) along the radial line at angle, averaged over nodes in each radial bin
 // (through the thickness, where bending makes u_r change sign), sorted by radius.
 std::vector<std::pair<double, double>> radial_profile(const std::vector<Ring>& rings,
                                                       const std::vector<CylindricalNode>& nodes,
@@ -349,11 +355,12 @@ std::vector<std::pair<double, double>> radial_profile(const std::vector<Ring>& r
     }
   }
   std::sort(samples.begin(), samples.end());
+  const double bin = std::max(tolerance, (outer - inner) / kRadialBins);
   std::vector<std::pair<double, double>> profile;
   for (std::size_t first = 0; first < samples.size();) {
     std::size_t last = first;
     double sum = 0;
-    while (last < samples.size() && samples[last].first - samples[first].first <= tolerance) {
+    while (last < samples.size() && samples[last].first - samples[first].first <= bin) {
       sum += samples[last++].second;
     }
     profile.emplace_back(samples[first].first, sum / (last - first));

@@ -18,7 +18,7 @@ namespace railfe {
 struct ShiftInvertSettings {
   int n_modes = 10;            ///< eigenpairs wanted (those nearest the shift)
   int block_size = 2;          ///< vectors per Krylov block (≥ 2 finds doublets together)
-  int krylov_blocks = 0;       ///< blocks in the Krylov space; 0 = automatic (about 2 × n_modes)
+  int krylov_blocks = 0;       ///< blocks in the Krylov space; 0 = automatic (about 3 × n_modes)
   int maximum_restarts = 100;  ///< restarts before giving up
   double tolerance = 1e-10;    ///< Ritz residual of the inverted problem, relative to its value
   unsigned seed = 12345;       ///< seed of the random start block (reproducible runs)
@@ -49,8 +49,11 @@ class ShiftInvertEigensolver {
                          LinearSolver& inner, const ProblemTraits& traits, double shift);
 
   /// The settings.n_modes eigenpairs nearest the shift (collective), reporting operator
-  /// applications to \p progress if given.
-  ShiftInvertResult solve(const ShiftInvertSettings& settings, Progress* progress = nullptr) const;
+  /// applications to \p progress if given. With \p found (M-orthonormal modes of an earlier
+  /// solve), the search runs M-orthogonal to them: the next n_modes beyond those, without
+  /// recomputing them (spectrum continuation for frequency bands).
+  ShiftInvertResult solve(const ShiftInvertSettings& settings, Progress* progress = nullptr,
+                          Teuchos::RCP<const TpetraMultiVector> found = Teuchos::null) const;
 
   /// Seconds the factorization took.
   double factor_seconds() const { return factor_seconds_; }

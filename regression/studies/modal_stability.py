@@ -91,7 +91,8 @@ def run(railfe, workdir, name, deck_text):
     if os.path.exists(path):
         with open(path) as handle:
             summary = json.load(handle)
-    message = (completed.stderr.strip().splitlines() or [""])[-1]
+    message = next((line for line in completed.stderr.splitlines() if line.startswith("railfe:")),
+                   "")
     return completed.returncode, modes, summary, message
 
 

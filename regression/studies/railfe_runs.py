@@ -95,3 +95,46 @@ def step_section(summary, step):
         if key.startswith("Step " + step + " "):
             return value
     raise KeyError(step)
+
+
+def steel_materials_xml(blocks):
+    """The Materials section: steel (E 210 GPa, nu 0.3, rho 7850) on the named blocks."""
+    return f"""  <ParameterList name="Materials">
+    <ParameterList name="steel">
+      <Parameter name="Young's modulus" type="double" value="210e9"/>
+      <Parameter name="Poisson's ratio" type="double" value="0.3"/>
+      <Parameter name="Density" type="double" value="7850"/>
+      <Parameter name="Blocks" type="Array(string)" value="{{{', '.join(blocks)}}}"/>
+    </ParameterList>
+  </ParameterList>
+"""
+
+
+def wheel_modal_deck(element_size, modes, band=None, block_size=4, export=False):
+    """A modal deck for the default wheel (S1002, bore fixed on a rigid axle) at `element_size`:
+    the `modes` lowest modes, or every mode in `band` (Hz) with `modes` as the first guess."""
+    band_xml = (f'<Parameter name="Frequency band" type="Array(double)" '
+                f'value="{{{band[0]}, {band[1]}}}"/>' if band else "")
+    return f"""<ParameterList name="railfe">
+  <Parameter name="Title" type="string" value="wheel modes, {element_size} m elements"/>
+  <ParameterList name="Mesh">
+    <Parameter name="Type" type="string" value="wheel"/>
+    <ParameterList name="Wheel">
+      <Parameter name="Element size" type="double" value="{element_size}"/>
+    </ParameterList>
+  </ParameterList>
+{steel_materials_xml(["wheel"])}  <ParameterList name="Steps">
+    <ParameterList name="wheel">
+      <Parameter name="Module" type="string" value="modal"/>
+      <Parameter name="Modes" type="int" value="{modes}"/>
+      {band_xml}
+      <Parameter name="Block size" type="int" value="{block_size}"/>
+      <Parameter name="Exodus" type="bool" value="false"/>
+      <Parameter name="Export matrices" type="bool" value="{str(export).lower()}"/>
+      <ParameterList name="Supports">
+        <ParameterList name="axle seat"><Parameter name="Node set" type="string" value="bore"/></ParameterList>
+      </ParameterList>
+    </ParameterList>
+  </ParameterList>
+</ParameterList>
+"""
