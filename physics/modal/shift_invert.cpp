@@ -39,8 +39,10 @@ class ShiftInvertOperator : public TpetraOperator {
     inner_.solve_block(mass_times_x, solution);
     Y.update(alpha, solution, beta);
     applies_ += static_cast<long long>(X.getNumVectors());
+    // Krylov-Schur typically needs about one Krylov space of applications; the share of it is
+    // the progress (its phase has a total of 1), held below 100 % until the solve ends.
     if (progress_ != nullptr)
-      progress_->update(std::min(applies_, expected_));
+      progress_->update(std::min(0.99, static_cast<double>(applies_) / expected_));
   }
 
   long long applies() const { return applies_; }
