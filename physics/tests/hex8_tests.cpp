@@ -177,3 +177,61 @@ TEST(Hex8, LoadResultants) {
 
 }  // namespace
 }  // namespace railfe
+
+namespace railfe {
+namespace {
+
+// The consistent mass of a rectangular brick has the closed form ρV/216 · 2^(shared coordinates)
+// per node pair (Zienkiewicz & Taylor): diagonal ρV/27, edge neighbours ρV/54, face diagonals
+// ρV/108, body diagonals ρV/216.
+TEST(Hex8, ConsistentMassOfABrickMatchesClosedForm) {
+  double x[8][3];
+  const double lengths[3] = {2.0, 0.5, 1.5};
+  for (int a = 0; a < 8; ++a) {
+    for (int d = 0; d < 3; ++d)
+      x[a][d] = (kHex8NodeReference[a][d] + 1) / 2 * lengths[d];
+  }
+  const double density = 7850, mass = density * 2.0 * 0.5 * 1.5;
+  Matrix24 M;
+  hex8_mass(x, density, false, M.data());
+  for (int a = 0; a < 8; ++a) {
+    for (int b = 0; b < 8; ++b) {
+      int shared = 0;
+      for (int d = 0; d < 3; ++d)
+        shared += kHex8NodeReference[a][d] == kHex8NodeReference[b][d] ? 1 : 0;
+      const double expected = mass / 216 * std::pow(2.0, shared);
+      for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+          EXPECT_NEAR(M(3 * a + i, 3 * b + j), i == j ? expected : 0.0, 1e-12 * mass);
+        }
+      }
+    }
+  }
+}
+
+// Lumping keeps the total mass in each direction and leaves a diagonal; on a distorted element
+// the consistent matrix still carries the element's mass ρV in each direction.
+TEST(Hex8, LumpedMassIsDiagonalWithTheElementMass) {
+  double x[8][3];
+  distorted(x);
+  const double density = 7850, mass = density * hex8_volume(x);
+  Matrix24 consistent, lumped;
+  hex8_mass(x, density, false, consistent.data());
+  hex8_mass(x, density, true, lumped.data());
+  for (int d = 0; d < 3; ++d) {
+    double consistent_sum = 0, lumped_sum = 0;
+    for (int a = 0; a < 8; ++a) {
+      for (int b = 0; b < 8; ++b) {
+        consistent_sum += consistent(3 * a + d, 3 * b + d);
+        lumped_sum += lumped(3 * a + d, 3 * b + d);
+      }
+      EXPECT_GT(lumped(3 * a + d, 3 * a + d), 0.0);
+    }
+    EXPECT_NEAR(consistent_sum, mass, 1e-12 * mass);
+    EXPECT_NEAR(lumped_sum, mass, 1e-12 * mass);
+  }
+  EXPECT_NEAR((lumped - Matrix24(lumped.diagonal().asDiagonal())).norm(), 0.0, 1e-14 * mass);
+}
+
+}  // namespace
+}  // namespace railfe

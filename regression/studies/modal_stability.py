@@ -27,7 +27,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from railfe_runs import mpi_prefix  # noqa: E402
+from railfe_runs import mpi_prefix, steel_materials_xml  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SECTION = os.path.join(ROOT, "inputs", "meshes", "ring_section_n4.msh")
@@ -45,15 +45,7 @@ def ring_deck(block_size, krylov_dimension, restarts, shift):
       <Parameter name="Elements around" type="int" value="128"/>
     </ParameterList>
   </ParameterList>
-  <ParameterList name="Materials">
-    <ParameterList name="steel">
-      <Parameter name="Young's modulus" type="double" value="200e9"/>
-      <Parameter name="Poisson's ratio" type="double" value="0.3"/>
-      <Parameter name="Density" type="double" value="8000"/>
-      <Parameter name="Blocks" type="Array(string)" value="{{ring}}"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Steps">
+{steel_materials_xml(["ring"], young=200e9, density=8000)}  <ParameterList name="Steps">
     <ParameterList name="ring">
       <Parameter name="Module" type="string" value="modal"/>
       <Parameter name="Modes" type="int" value="{N_MODES}"/>

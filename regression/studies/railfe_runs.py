@@ -6,6 +6,20 @@ import os
 import subprocess
 
 
+def steel_materials_xml(blocks, young=210e9, density=7850):
+    """The Materials section: one steel (nu 0.3; E 210 GPa, rho 7850 kg/m^3 unless given) on the
+    named blocks."""
+    return f"""  <ParameterList name="Materials">
+    <ParameterList name="steel">
+      <Parameter name="Young's modulus" type="double" value="{young:g}"/>
+      <Parameter name="Poisson's ratio" type="double" value="0.3"/>
+      <Parameter name="Density" type="double" value="{density:g}"/>
+      <Parameter name="Blocks" type="Array(string)" value="{{{', '.join(blocks)}}}"/>
+    </ParameterList>
+  </ParameterList>
+"""
+
+
 def box_statics_deck(lengths, elements, clamp, load_set, load, solver=None, gravity=None,
                      probe=None, exodus=False):
     """A statics deck for a steel box (E 210 GPa, nu 0.3): `clamp` fully fixed, `load` = (kind,
@@ -30,15 +44,7 @@ def box_statics_deck(lengths, elements, clamp, load_set, load, solver=None, grav
       <Parameter name="Elements" type="Array(int)" value="{array(elements)}"/>
     </ParameterList>
   </ParameterList>
-  <ParameterList name="Materials">
-    <ParameterList name="steel">
-      <Parameter name="Young's modulus" type="double" value="210e9"/>
-      <Parameter name="Poisson's ratio" type="double" value="0.3"/>
-      <Parameter name="Density" type="double" value="7850"/>
-      <Parameter name="Blocks" type="Array(string)" value="{{block_1}}"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Output">
+{steel_materials_xml(["block_1"])}  <ParameterList name="Output">
     <Parameter name="Exodus" type="bool" value="{'true' if exodus else 'false'}"/>
   </ParameterList>
   <ParameterList name="Steps">
@@ -95,19 +101,6 @@ def step_section(summary, step):
         if key.startswith("Step " + step + " "):
             return value
     raise KeyError(step)
-
-
-def steel_materials_xml(blocks):
-    """The Materials section: steel (E 210 GPa, nu 0.3, rho 7850) on the named blocks."""
-    return f"""  <ParameterList name="Materials">
-    <ParameterList name="steel">
-      <Parameter name="Young's modulus" type="double" value="210e9"/>
-      <Parameter name="Poisson's ratio" type="double" value="0.3"/>
-      <Parameter name="Density" type="double" value="7850"/>
-      <Parameter name="Blocks" type="Array(string)" value="{{{', '.join(blocks)}}}"/>
-    </ParameterList>
-  </ParameterList>
-"""
 
 
 def wheel_modal_deck(element_size, modes, band=None, block_size=4, export=False):
