@@ -140,4 +140,21 @@ void check_mesh(const Mesh& mesh) {
   check_sets(mesh);
 }
 
+double block_volume(const Mesh& mesh, const ElementBlock& block) {
+  if (block.type != ElementType::hex8)
+    return 0;
+  const Hex8GaussTable& table = hex8_gauss_table();
+  double sum = 0;
+  double x[8][3], gradient[3][8];
+  for (GlobalIndex e = 0; e < block.n_elements(); ++e) {
+    for (int a = 0; a < 8; ++a) {
+      for (int d = 0; d < 3; ++d)
+        x[a][d] = mesh.coordinates[3 * block.element_nodes(e)[a] + d];
+    }
+    for (int q = 0; q < 8; ++q)
+      sum += hex8_gradients(x, table.dN[q], gradient);
+  }
+  return sum;
+}
+
 }  // namespace railfe

@@ -16,6 +16,10 @@ namespace railfe {
 /// are accepted, as in MacNeal and Harder's standard patch, whose element 2 has one.
 void check_mesh(const Mesh& mesh);
 
+/// Volume of the hex8 elements of \p block (m³), by 2×2×2 Gauss quadrature: exact for
+/// trilinear hexahedra. For tests and summaries; other element types count nothing.
+double block_volume(const Mesh& mesh, const ElementBlock& block);
+
 /// Smallest Jacobian determinant of a hex8 element at its 2×2×2 integration points, divided by
 /// (longest edge / 2)³: 1 for a cube, <= 0 for an inverted element.
 double hex8_jacobian_quality(const double x[8][3]);

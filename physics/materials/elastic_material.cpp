@@ -1,5 +1,7 @@
 #include "physics/materials/elastic_material.hpp"
 
+#include "framework/app/model.hpp"
+
 #include <Teuchos_Array.hpp>
 
 #include "framework/base/error.hpp"
@@ -50,6 +52,18 @@ void MaterialTable::require_solid_blocks(const Mesh& mesh, const std::string& de
                         "list it under Blocks of one of the Materials");
     }
   }
+}
+
+MaterialTable solid_materials(const Model& model, const std::string& step) {
+  const std::string& deck = model.deck().source;
+  if (!model.has_section("Materials")) {
+    throw_input_error(deck, "Materials",
+                      "missing: " + step + " needs a material for every solid block",
+                      "a Materials section");
+  }
+  MaterialTable table(model.section("Materials"), model.mesh(), deck);
+  table.require_solid_blocks(model.mesh(), deck, "Materials");
+  return table;
 }
 
 }  // namespace railfe

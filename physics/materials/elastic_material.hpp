@@ -14,6 +14,8 @@
 
 namespace railfe {
 
+class Model;
+
 /// An isotropic linear elastic material.
 struct ElasticMaterial {
   std::string name;    ///< the name of its sublist in Materials
@@ -46,5 +48,11 @@ class MaterialTable {
   std::vector<ElasticMaterial> materials_;
   std::vector<int> assignment_;  // per block: index into materials_, or -1
 };
+
+/// The materials of a step that needs one for every solid (hex8) block: reads the deck's
+/// Materials section of \p model. Throws InputError naming the deck when the section is missing
+/// (\p step describes the step in the message, e.g. "the statics step 'load'") or a solid block
+/// has no material.
+MaterialTable solid_materials(const Model& model, const std::string& step);
 
 }  // namespace railfe

@@ -143,14 +143,7 @@ void ModalStep::check(const CheckContext& context) {
   const Mesh& mesh = context.model.mesh();
   const std::string& deck = context.source();
   const std::string& path = context.path;
-  if (!context.model.has_section("Materials")) {
-    throw_input_error(deck, "Materials",
-                      "missing: the modal step '" + context.step_name +
-                          "' needs a material for every solid block",
-                      "a Materials section");
-  }
-  materials_.emplace(context.model.section("Materials"), mesh, deck);
-  materials_->require_solid_blocks(mesh, deck, "Materials");
+  materials_ = solid_materials(context.model, "the modal step '" + context.step_name + "'");
   for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
     if (materials_->has_material(static_cast<int>(b)) &&
         !(materials_->of_block(static_cast<int>(b)).density > 0)) {

@@ -39,14 +39,7 @@ void StaticsStep::check(const CheckContext& context) {
   const std::string& deck = context.source();
   conditions_ = read_solid_conditions(*parameters_, deck, context.path);
   check_solid_conditions(conditions_, mesh, deck, context.path);
-  if (!context.model.has_section("Materials")) {
-    throw_input_error(deck, "Materials",
-                      "missing: the statics step '" + context.step_name +
-                          "' needs a material for every solid block",
-                      "a Materials section");
-  }
-  materials_.emplace(context.model.section("Materials"), mesh, deck);
-  materials_->require_solid_blocks(mesh, deck, "Materials");
+  materials_ = solid_materials(context.model, "the statics step '" + context.step_name + "'");
   for (const auto& force : conditions_.nodal_forces) {
     bool attached = false;
     for (GlobalIndex node : mesh.node_set(force.node_set, deck, "").nodes) {

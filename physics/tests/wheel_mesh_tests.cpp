@@ -9,7 +9,6 @@
 #include "framework/base/error.hpp"
 #include "framework/deck/deck.hpp"
 #include "framework/deck/validation.hpp"
-#include "framework/mesh/hex8_shape.hpp"
 #include "framework/mesh/mesh_checks.hpp"
 #include "physics/parts/wheel_mesh.hpp"
 
@@ -28,19 +27,7 @@ std::string input_error(const std::function<void()>& action) {
 }
 
 double volume(const Mesh& mesh, const std::string& block_name) {
-  const auto& table = hex8_gauss_table();
-  double sum = 0;
-  const auto& block = mesh.blocks[mesh.block_index(block_name, "", "")];
-  for (GlobalIndex e = 0; e < block.n_elements(); ++e) {
-    double x[8][3], gradient[3][8];
-    for (int a = 0; a < 8; ++a) {
-      for (int d = 0; d < 3; ++d)
-        x[a][d] = mesh.coordinates[3 * block.element_nodes(e)[a] + d];
-    }
-    for (int q = 0; q < 8; ++q)
-      sum += hex8_gradients(x, table.dN[q], gradient);
-  }
-  return sum;
+  return block_volume(mesh, mesh.blocks[mesh.block_index(block_name, "", "")]);
 }
 
 // Pappus: 2π ∫ r dA over the polygon (the tread through every profile point).
