@@ -8,20 +8,12 @@
 
 #include "contact/geometry/profile_file.hpp"
 #include "framework/base/error.hpp"
+#include "framework/testing/input_error.hpp"
 
 namespace railfe {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string input_error(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "";
-}
 
 TEST(ProfileFile, ReadsTheS1002Wheel) {
   const ProfileFile profile = read_profile_file(shipped_profile("MBench_S1002_v3.prw"));
@@ -50,30 +42,30 @@ TEST(ProfileFile, RefusesWhatItCannotUse) {
     std::ofstream(dir / name) << text;
     return (dir / name).string();
   };
-  auto message = input_error([&] { read_profile_file((dir / "missing.prr").string()); });
+  auto message = input_error_of([&] { read_profile_file((dir / "missing.prr").string()); });
   EXPECT_NE(message.find("not found"), std::string::npos) << message;
 
-  message = input_error([&] {
+  message = input_error_of([&] {
     read_profile_file(write("empty.prr", header + "  point.begin\n  point.end\nspline.end\n"));
   });
   EXPECT_NE(message.find("lists no profile points"), std::string::npos) << message;
 
-  message = input_error([&] {
+  message = input_error_of([&] {
     read_profile_file(write("twice.prr", header + "point.begin\n1 0\n2 0\n2 1\npoint.end\n"));
   });
   EXPECT_NE(message.find("'line 9': y = 2 is listed twice"), std::string::npos) << message;
 
-  message = input_error([&] {
+  message = input_error_of([&] {
     read_profile_file(write("order.prr", header + "point.begin\n1 0\n2 0\n1.5 1\npoint.end\n"));
   });
   EXPECT_NE(message.find("breaks the order"), std::string::npos) << message;
 
-  message = input_error([&] {
+  message = input_error_of([&] {
     read_profile_file(write("text.prr", header + "point.begin\n1 0\n2 abc\npoint.end\n"));
   });
   EXPECT_NE(message.find("'abc'"), std::string::npos) << message;
 
-  message = input_error(
+  message = input_error_of(
       [&] { read_profile_file(write("unit.prr", "header.begin\ntype = 1\nheader.end\n")); });
   EXPECT_NE(message.find("no length unit"), std::string::npos) << message;
 

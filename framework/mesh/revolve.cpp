@@ -1,4 +1,5 @@
 #include "framework/mesh/revolve.hpp"
+#include "framework/base/constants.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,8 +11,6 @@
 namespace railfe {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 double signed_area(const SectionMesh& section, const std::array<GlobalIndex, 4>& quad) {
   double twice = 0;

@@ -16,6 +16,7 @@
 #include "framework/mesh/mesh_checks.hpp"
 #include "framework/mesh/mesh_readers.hpp"
 #include "framework/mesh/partition.hpp"
+#include "framework/testing/input_error.hpp"
 
 namespace railfe {
 namespace {
@@ -29,15 +30,6 @@ fs::path scratch(const std::string& name) {
   fs::remove_all(path);
   fs::create_directories(path);
   return path;
-}
-
-std::string input_error(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "";
 }
 
 TEST(Box, CountsSetsAndGrading) {
@@ -73,7 +65,7 @@ TEST(MeshChecks, InvertedAndDegenerateElementsAreRefused) {
   std::swap(conn[8 + 1], conn[8 + 5]);
   std::swap(conn[8 + 2], conn[8 + 6]);
   std::swap(conn[8 + 3], conn[8 + 7]);
-  auto message = input_error([&] { check_mesh(inverted); });
+  auto message = input_error_of([&] { check_mesh(inverted); });
   EXPECT_NE(message.find("element 2"), std::string::npos) << message;
   EXPECT_NE(message.find("inverted"), std::string::npos) << message;
 
@@ -84,12 +76,12 @@ TEST(MeshChecks, InvertedAndDegenerateElementsAreRefused) {
       degenerate.coordinates[3 * nodes[k + 4] + d] = degenerate.coordinates[3 * nodes[k] + d];
     }
   }
-  message = input_error([&] { check_mesh(degenerate); });
+  message = input_error_of([&] { check_mesh(degenerate); });
   EXPECT_NE(message.find("degenerate"), std::string::npos) << message;
 
   Mesh dangling = generate_box(spec);
   dangling.blocks[0].connectivity[3] = 999;
-  message = input_error([&] { check_mesh(dangling); });
+  message = input_error_of([&] { check_mesh(dangling); });
   EXPECT_NE(message.find("node 1000"), std::string::npos) << message;
 
   const double cube[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
@@ -116,14 +108,14 @@ TEST(DerivedSets, BoxPointAndSideSelections) {
   DerivedSetSpec empty{"empty",      false,
                        "",           std::array<double, 6>{5, 6, 5, 6, 5, 6},
                        std::nullopt, "Mesh/Node sets/empty"};
-  auto message = input_error([&] { add_derived_sets(mesh, {empty}, "deck.xml"); });
+  auto message = input_error_of([&] { add_derived_sets(mesh, {empty}, "deck.xml"); });
   EXPECT_NE(message.find("selects no nodes"), std::string::npos) << message;
   DerivedSetSpec clash{"xmin",       false,
                        "",           std::array<double, 6>{0, 1, 0, 1, 0, 1},
                        std::nullopt, "Mesh/Node sets/xmin"};
-  message = input_error([&] { add_derived_sets(mesh, {clash}, "deck.xml"); });
+  message = input_error_of([&] { add_derived_sets(mesh, {clash}, "deck.xml"); });
   EXPECT_NE(message.find("already exists"), std::string::npos) << message;
-  message = input_error([&] { mesh.node_set("xmn", "deck.xml", "Steps/s/Node set"); });
+  message = input_error_of([&] { mesh.node_set("xmn", "deck.xml", "Steps/s/Node set"); });
   EXPECT_NE(message.find("did you mean 'xmin'"), std::string::npos) << message;
 }
 
@@ -178,10 +170,10 @@ TEST(ExodusReader, ReadsBlocksSetsAndNames) {
   EXPECT_EQ(sides[0].face, 1);
   EXPECT_NO_THROW(check_mesh(mesh));
 
-  auto message = input_error([&] { read_exodus_mesh((dir / "missing.exo").string()); });
+  auto message = input_error_of([&] { read_exodus_mesh((dir / "missing.exo").string()); });
   EXPECT_NE(message.find("mesh file not found"), std::string::npos) << message;
   std::ofstream(dir / "garbage.exo") << "not a netCDF file";
-  message = input_error([&] { read_exodus_mesh((dir / "garbage.exo").string()); });
+  message = input_error_of([&] { read_exodus_mesh((dir / "garbage.exo").string()); });
   EXPECT_NE(message.find("cannot be read as an Exodus II file"), std::string::npos) << message;
 }
 
@@ -219,16 +211,16 @@ Physical Surface("top") = {body[0]};
 TEST(GmshReader, RefusesWhatItCannotUse) {
   const auto dir = scratch("gmsh_bad");
   std::ofstream(dir / "old.msh") << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n";
-  auto message = input_error([&] { read_gmsh_mesh((dir / "old.msh").string()); });
+  auto message = input_error_of([&] { read_gmsh_mesh((dir / "old.msh").string()); });
   EXPECT_NE(message.find("version 2.2 is not supported"), std::string::npos) << message;
   EXPECT_NE(message.find("line 2"), std::string::npos) << message;
   std::ofstream(dir / "tet.msh")
       << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
          "$Nodes\n1 4 1 4\n3 1 0 4\n1\n2\n3\n4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n$EndNodes\n"
          "$Elements\n1 1 1 1\n3 1 4 1\n1 1 2 3 4\n$EndElements\n";
-  message = input_error([&] { read_gmsh_mesh((dir / "tet.msh").string()); });
+  message = input_error_of([&] { read_gmsh_mesh((dir / "tet.msh").string()); });
   EXPECT_NE(message.find("tetrahedron"), std::string::npos) << message;
-  message = input_error([&] { read_gmsh_mesh((dir / "none.msh").string()); });
+  message = input_error_of([&] { read_gmsh_mesh((dir / "none.msh").string()); });
   EXPECT_NE(message.find("not found"), std::string::npos) << message;
 }
 

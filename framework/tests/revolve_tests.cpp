@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "framework/base/constants.hpp"
 #include "framework/base/error.hpp"
 #include "framework/base/parallel.hpp"
 #include "framework/deck/deck.hpp"
@@ -15,21 +16,12 @@
 #include "framework/mesh/mesh_parameters.hpp"
 #include "framework/mesh/mesh_readers.hpp"
 #include "framework/mesh/revolve.hpp"
+#include "framework/testing/input_error.hpp"
 
 namespace railfe {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr double kPi = 3.14159265358979323846;
-
-std::string input_error(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "";
-}
 
 fs::path source_dir() {
   const char* dir = std::getenv("RAILFE_SOURCE_DIR");
@@ -115,10 +107,10 @@ TEST(Revolve, AnnulusVolumeCountsAndSets) {
 
 TEST(Revolve, RefusesNodesOnTheAxisAndTooFewSlices) {
   SectionMesh section = rectangle(0, 1, 0, 1, 2, 2);
-  auto message = input_error([&] { revolve(section, 8); });
+  auto message = input_error_of([&] { revolve(section, 8); });
   EXPECT_NE(message.find("section node 1 has r = 0"), std::string::npos) << message;
   EXPECT_NE(message.find("small bore"), std::string::npos) << message;
-  message = input_error([&] { revolve(rectangle(1, 2, 0, 1, 1, 1), 2); });
+  message = input_error_of([&] { revolve(rectangle(1, 2, 0, 1, 1, 1), 2); });
   EXPECT_NE(message.find("at least 3"), std::string::npos) << message;
 }
 
@@ -151,7 +143,7 @@ TEST(Revolve, GmshSectionMustBeQuadrangles) {
   const std::string command = "gmsh -2 -format msh41 -o " + (dir / "tri.msh").string() + " " +
                               (dir / "tri.geo").string() + " > /dev/null 2>&1";
   ASSERT_EQ(std::system(command.c_str()), 0);
-  const auto message = input_error([&] { read_gmsh_section((dir / "tri.msh").string()); });
+  const auto message = input_error_of([&] { read_gmsh_section((dir / "tri.msh").string()); });
   EXPECT_NE(message.find("only quadrangles"), std::string::npos) << message;
   fs::remove_all(dir);
 }
@@ -172,8 +164,8 @@ TEST(Revolve, MeshTypeRevolvedInADeck) {
   EXPECT_TRUE(mesh.has_node_set("surface"));
 
   section.sublist("Revolved").set("Elements around", 2);
-  const auto message =
-      input_error([&] { validate_and_complete(section, *mesh_parameters().list(), "d", "Mesh"); });
+  const auto message = input_error_of(
+      [&] { validate_and_complete(section, *mesh_parameters().list(), "d", "Mesh"); });
   EXPECT_NE(message.find("Mesh/Revolved/Elements around"), std::string::npos) << message;
 }
 

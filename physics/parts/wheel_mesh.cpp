@@ -1,4 +1,5 @@
 #include "physics/parts/wheel_mesh.hpp"
+#include "framework/base/constants.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +15,6 @@ namespace railfe {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 using Point = std::array<double, 2>;  // (r, a)
 
 [[noreturn]] void refuse(const std::string& source, const std::string& parameter,

@@ -11,14 +11,13 @@
 #include <stdexcept>
 #include <vector>
 
+#include "framework/base/constants.hpp"
 #include "physics/modal/mode_classifier.hpp"
 
 namespace railfe {
 namespace {
 
 using Vector3 = std::array<double, 3>;
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Position of a node in cylindrical coordinates about the test's own axis.
 struct Cylindrical {

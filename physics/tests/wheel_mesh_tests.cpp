@@ -6,25 +6,16 @@
 #include <functional>
 
 #include "contact/geometry/profile_file.hpp"
+#include "framework/base/constants.hpp"
 #include "framework/base/error.hpp"
 #include "framework/deck/deck.hpp"
 #include "framework/deck/validation.hpp"
 #include "framework/mesh/mesh_checks.hpp"
+#include "framework/testing/input_error.hpp"
 #include "physics/parts/wheel_mesh.hpp"
 
 namespace railfe {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-std::string input_error(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "";
-}
 
 double volume(const Mesh& mesh, const std::string& block_name) {
   return block_volume(mesh, mesh.blocks[mesh.block_index(block_name, "", "")]);
@@ -114,20 +105,20 @@ TEST(WheelMesh, HalfAxle) {
 TEST(WheelMesh, RefusesDimensionsThatMakeNoWheel) {
   WheelDimensions d = coarse();
   d.rim_width = 0.12;
-  auto message = input_error([&] { wheel_section(d, "deck.xml"); });
+  auto message = input_error_of([&] { wheel_section(d, "deck.xml"); });
   EXPECT_NE(message.find("deck.xml: 'Mesh/Wheel/Rim width'"), std::string::npos) << message;
   d = coarse();
   d.web_thickness = 0.2;
-  message = input_error([&] { wheel_section(d, "deck.xml"); });
+  message = input_error_of([&] { wheel_section(d, "deck.xml"); });
   EXPECT_NE(message.find("Web thickness"), std::string::npos) << message;
   d = coarse();
   d.half_axle = true;
   d.axle_diameter = 0.2;
-  message = input_error([&] { wheel_section(d, "deck.xml"); });
+  message = input_error_of([&] { wheel_section(d, "deck.xml"); });
   EXPECT_NE(message.find("Axle diameter"), std::string::npos) << message;
   d = coarse();
   d.profile_file = "no_such_profile.prw";
-  message = input_error([&] { wheel_section(d, "deck.xml"); });
+  message = input_error_of([&] { wheel_section(d, "deck.xml"); });
   EXPECT_NE(message.find("not found"), std::string::npos) << message;
 }
 
@@ -147,7 +138,7 @@ TEST(WheelMesh, MeshTypeWheelInADeck) {
   EXPECT_EQ(mesh.source, "wheel.xml: Mesh/Wheel");
 
   Deck other = parse_deck(xml, "wheel.xml", ".");
-  const auto message = input_error([&] {
+  const auto message = input_error_of([&] {
     validate_and_complete(other.parameters->sublist("Mesh"), *mesh_parameters().list(), "d",
                           "Mesh");
   });
