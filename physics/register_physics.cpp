@@ -1,6 +1,7 @@
 // The one place where physics modules and shared sections are named. Adding a module: a new
 // folder under physics/ and one line here.
 #include "framework/app/registry.hpp"
+#include "physics/explicit/explicit_module.hpp"
 #include "physics/materials/elastic_material.hpp"
 #include "physics/modal/modal_module.hpp"
 #include "physics/parts/wheel_mesh.hpp"
@@ -13,6 +14,7 @@ void register_physics(ModuleRegistry& registry) {
                         false, materials_parameters});
   registry.add_module(statics_module());
   registry.add_module(modal_module());
+  registry.add_module(explicit_module());
   registry.add_mesh_generator(wheel_mesh_generator());
 }
 

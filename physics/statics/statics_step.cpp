@@ -138,6 +138,7 @@ void StaticsStep::run(StepContext& context) {
   write_results(context, dofs, *u, reactions);
   summary.add(section, "time: output", clock.seconds(), "s");
   model.set_field("displacement", u);
+  model.set_field(context.step_name + "/displacement", u);
 }
 
 void StaticsStep::write_results(StepContext& context, const DofMap& dofs, const TpetraVector& u,

@@ -38,8 +38,8 @@ ParameterSpec expectation_parameters() {
   check.choice("Entity", "node", {{"node", "nodal variable"}, {"element", "element variable"}},
                "Exodus: where the variable lives.");
   check.choice("Statistic", "all",
-               {{"all", "every value must match"},
-                {"max", "the largest value"},
+               {{"all", "every value must match (CSV: the cell named by Row)"},
+                {"max", "the largest value (CSV: over the whole Column)"},
                 {"min", "the smallest value"},
                 {"max_abs", "the largest magnitude"},
                 {"at", "the value at one node or element (Index)"}},
@@ -110,10 +110,40 @@ std::string csv_cell(const Teuchos::ParameterList& check, const std::string& pat
   return table.rows[*row][column];
 }
 
+// The one value a Statistic (max, min, max_abs) picks from \p quantity.
+Quantity reduce(const Quantity& quantity, const std::string& statistic) {
+  auto pick = std::max_element(quantity.values.begin(), quantity.values.end());
+  if (statistic == "min")
+    pick = std::min_element(quantity.values.begin(), quantity.values.end());
+  if (statistic == "max_abs") {
+    pick = std::max_element(quantity.values.begin(), quantity.values.end(),
+                            [](double a, double b) { return std::abs(a) < std::abs(b); });
+  }
+  const std::size_t k = pick - quantity.values.begin();
+  const double value = statistic == "max_abs" ? std::abs(*pick) : *pick;
+  return Quantity{{value}, {quantity.points[k]}};
+}
+
 Quantity read_quantity(const Teuchos::ParameterList& check, const std::string& directory) {
   const std::string path =
       (std::filesystem::path(directory) / check.get<std::string>("File")).string();
   Quantity quantity;
+  const std::string statistic = check.get<std::string>("Statistic");
+  if (!check.get<std::string>("Column").empty() && statistic != "all" && statistic != "at") {
+    // A whole CSV column (a history): its extreme.
+    const CsvTable table = read_csv(path);
+    const std::size_t column = table.column(check.get<std::string>("Column"));
+    for (const auto& row : table.rows) {
+      double value = 0;
+      if (!parse_number(row[column], value))
+        throw std::runtime_error("cell '" + row[column] + "' is not a number");
+      quantity.values.push_back(value);
+      quantity.points.push_back({0, 0, 0});
+    }
+    if (quantity.values.empty())
+      throw std::runtime_error("the column is empty");
+    return reduce(quantity, statistic);
+  }
   if (!check.get<std::string>("Column").empty()) {
     const std::string cell = csv_cell(check, path);
     double value = 0;
@@ -128,7 +158,6 @@ Quantity read_quantity(const Teuchos::ParameterList& check, const std::string& d
     throw std::runtime_error("give Column (CSV) or Variable (Exodus)");
   const bool nodal = check.get<std::string>("Entity") == "node";
   ExodusField field = read_exodus_field(path, variable, nodal, check.get<int>("Step"));
-  const std::string statistic = check.get<std::string>("Statistic");
   if (statistic == "at") {
     const std::size_t index = static_cast<std::size_t>(check.get<int>("Index")) - 1;
     if (index >= field.values.size())
@@ -149,19 +178,7 @@ Quantity read_quantity(const Teuchos::ParameterList& check, const std::string& d
   }
   if (quantity.values.empty())
     throw std::runtime_error("the field is empty");
-  if (statistic != "all") {
-    auto pick = std::max_element(quantity.values.begin(), quantity.values.end());
-    if (statistic == "min")
-      pick = std::min_element(quantity.values.begin(), quantity.values.end());
-    if (statistic == "max_abs") {
-      pick = std::max_element(quantity.values.begin(), quantity.values.end(),
-                              [](double a, double b) { return std::abs(a) < std::abs(b); });
-    }
-    const std::size_t k = pick - quantity.values.begin();
-    const double value = statistic == "max_abs" ? std::abs(*pick) : *pick;
-    quantity = Quantity{{value}, {quantity.points[k]}};
-  }
-  return quantity;
+  return statistic == "all" ? quantity : reduce(quantity, statistic);
 }
 
 CheckOutcome evaluate(const std::string& name, const Teuchos::ParameterList& check,

@@ -1,0 +1,379 @@
+#include "physics/explicit/discrete_parts.hpp"
+
+#include <cmath>
+
+#include "framework/base/error.hpp"
+#include "framework/mesh/partition.hpp"
+
+namespace railfe {
+
+namespace {
+
+Eigen::Vector3d vector_of(const std::array<double, 3>& values) {
+  return {values[0], values[1], values[2]};
+}
+
+// exp([w]×): the rotation by |w| about w (Rodrigues).
+Eigen::Matrix3d rotation_of(const Eigen::Vector3d& w) {
+  const double angle = w.norm();
+  if (angle < 1e-300)
+    return Eigen::Matrix3d::Identity();
+  return Eigen::AngleAxisd(angle, w / angle).toRotationMatrix();
+}
+
+// Owned local nodes of a node set.
+std::vector<LocalIndex> owned_nodes(const MeshPartition& partition, const std::string& set) {
+  std::vector<LocalIndex> nodes;
+  for (GlobalIndex node : partition.mesh().node_set(set, "", "").nodes) {
+    const LocalIndex local = partition.local_node(node);
+    if (local >= 0 && local < partition.n_owned_nodes())
+      nodes.push_back(local);
+  }
+  return nodes;
+}
+
+}  // namespace
+
+DiscreteParts::DiscreteParts(const ExplicitSettings& settings, const MeshPartition& partition,
+                             const std::vector<double>& nodal_mass, const std::string& deck,
+                             const std::string& path)
+    : body_of_node_(partition.n_owned_nodes(), -1), moments_(settings.moments) {
+  const Communicator& comm = partition.comm();
+  for (const RigidBodySpec& spec : settings.bodies) {
+    const std::string where = path + "/Rigid bodies/" + spec.name;
+    RigidBody body;
+    body.name = spec.name;
+    body.extra_mass = spec.mass;
+    body.fixed = spec.fixed;
+    if (!spec.node_set.empty())
+      body.nodes = owned_nodes(partition, spec.node_set);
+    // Mass and centroid of the carried nodes, summed over ranks.
+    std::vector<double> sums(4, 0.0);
+    for (LocalIndex node : body.nodes) {
+      const double m = nodal_mass[node];
+      sums[0] += m;
+      for (int d = 0; d < 3; ++d)
+        sums[1 + d] += m * partition.coordinates(node)[d];
+      if (body_of_node_[node] >= 0)
+        throw_input_error(deck, where + "/Node set",
+                          "shares nodes with body '" + bodies_[body_of_node_[node]].name + "'",
+                          "node sets that do not overlap");
+      body_of_node_[node] = static_cast<int>(bodies_.size());
+    }
+    comm.sum_in_place(sums);
+    body.mass = spec.mass + sums[0];
+    body.reference = spec.reference ? vector_of(*spec.reference)
+                                    : Eigen::Vector3d(sums[1], sums[2], sums[3]) / sums[0];
+    std::vector<double> inertia(6, 0.0);
+    for (LocalIndex node : body.nodes) {
+      const Eigen::Vector3d r =
+          Eigen::Vector3d(partition.coordinates(node)[0], partition.coordinates(node)[1],
+                          partition.coordinates(node)[2]) -
+          body.reference;
+      body.offsets.push_back(r);
+      const Eigen::Matrix3d J =
+          nodal_mass[node] * (r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose());
+      const double entries[6] = {J(0, 0), J(1, 1), J(2, 2), J(0, 1), J(1, 2), J(0, 2)};
+      for (int k = 0; k < 6; ++k)
+        inertia[k] += entries[k];
+    }
+    comm.sum_in_place(inertia);
+    body.inertia << inertia[0], inertia[3], inertia[5], inertia[3], inertia[1], inertia[4],
+        inertia[5], inertia[4], inertia[2];
+    body.inertia += vector_of(spec.inertia).asDiagonal();
+    body.rotates = !(spec.node_set.empty() && spec.inertia == std::array<double, 3>{});
+    if (body.rotates) {
+      // A free rotation needs inertia about every free axis.
+      const Eigen::Vector3d principal =
+          Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(body.inertia).eigenvalues();
+      const bool all_locked = body.fixed[3] && body.fixed[4] && body.fixed[5];
+      if (!all_locked && principal.minCoeff() <= 1e-12 * std::max(principal.maxCoeff(), 1e-300))
+        throw_input_error(deck, where + "/Inertia",
+                          "leaves the body without inertia about some axis (its nodes lie on a "
+                          "line or point)",
+                          "Inertia > 0 about that axis, or Fixed rotations");
+    }
+    body.velocity = vector_of(spec.velocity);
+    body.angular_velocity =
+        body.rotates ? vector_of(spec.angular_velocity) : Eigen::Vector3d::Zero();
+    for (int d = 0; d < 3; ++d) {
+      if (body.fixed[d])
+        body.velocity[d] = 0;
+      if (body.fixed[3 + d])
+        body.angular_velocity[d] = 0;
+    }
+    bodies_.push_back(std::move(body));
+  }
+
+  auto body_index = [&](const std::string& name) {
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+      if (bodies_[b].name == name)
+        return static_cast<int>(b);
+    return -1;
+  };
+  for (const SpringSpec& spec : settings.springs) {
+    Spring spring;
+    spring.name = spec.name;
+    spring.stiffness = vector_of(spec.stiffness);
+    spring.damping = vector_of(spec.damping);
+    auto make_end = [&](const std::string& name) {
+      SpringEnd end;
+      if (name == "ground")
+        return end;
+      end.body = body_index(name);
+      if (end.body < 0) {
+        end.nodes = owned_nodes(partition, name);
+        end.share = 1.0 / static_cast<double>(comm.sum(static_cast<long long>(end.nodes.size())));
+      }
+      return end;
+    };
+    spring.a = make_end(spec.end_a);
+    spring.b = make_end(spec.end_b);
+    if (spring.a.body >= 0 && spring.b.share > 0)
+      std::swap(spring.a, spring.b);
+    if (spring.a.share > 0 && spring.b.share > 0)
+      throw_input_error(deck, path + "/Springs/" + spec.name,
+                        "joins two node sets, which railfe does not pair",
+                        "a node set and a rigid body or 'ground', or two rigid bodies");
+    // Critical step of the spring on the masses it joins (central difference with damping).
+    auto end_mass = [&](const SpringEnd& end) {
+      if (end.body >= 0)
+        return bodies_[end.body].mass;
+      if (end.share == 0)
+        return 1e300;
+      double lightest = 1e300;
+      for (LocalIndex node : end.nodes)
+        lightest = std::min(lightest, nodal_mass[node]);
+      return comm.min(lightest);
+    };
+    const double share = spring.a.share > 0 ? spring.a.share : 1.0;
+    const double inverse_mass = 1 / end_mass(spring.a) + 1 / end_mass(spring.b);
+    for (int d = 0; d < 3; ++d) {
+      const double k = share * spring.stiffness[d], c = share * spring.damping[d];
+      if (k <= 0)
+        continue;
+      const double omega = std::sqrt(k * inverse_mass);
+      const double xi = 0.5 * c * inverse_mass / omega;
+      stable_step_ = std::min(stable_step_, 2 / omega * (std::sqrt(1 + xi * xi) - xi));
+    }
+    springs_.push_back(std::move(spring));
+  }
+  const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
+  previous_own_force_.assign(bodies_.size(), zero);
+  previous_own_moment_.assign(bodies_.size(), zero);
+  body_step_.assign(bodies_.size(), zero);
+  for (const BodyMoment& moment : moments_)
+    moment_functions_.emplace_back(moment.function, deck, path + "/Moments/" + moment.name);
+}
+
+void DiscreteParts::initialise_nodes(NodalArrays& nodes) const {
+  for (const RigidBody& body : bodies_) {
+    for (std::size_t i = 0; i < body.nodes.size(); ++i) {
+      const Eigen::Vector3d r = body.rotation * body.offsets[i];
+      const Eigen::Vector3d v = body.velocity + body.angular_velocity.cross(r);
+      for (int d = 0; d < 3; ++d)
+        nodes.v[3 * body.nodes[i] + d] = v[d];
+    }
+  }
+}
+
+void DiscreteParts::predict(double dt, NodalArrays& nodes) {
+  for (RigidBody& body : bodies_) {
+    const Eigen::Vector3d step = dt * body.velocity + 0.5 * dt * dt * body.acceleration;
+    body.displacement += step;
+    body_step_[&body - bodies_.data()] = step;
+    body.velocity += 0.5 * dt * body.acceleration;
+    if (body.rotates) {
+      body.angular_velocity += 0.5 * dt * body.angular_acceleration;
+      body.rotation = rotation_of(dt * body.angular_velocity) * body.rotation;
+    }
+    body.force.setZero();
+    body.moment.setZero();
+    for (std::size_t i = 0; i < body.nodes.size(); ++i) {
+      const LocalIndex node = body.nodes[i];
+      const Eigen::Vector3d r = body.rotation * body.offsets[i];
+      const Eigen::Vector3d u = body.displacement + r - body.offsets[i];
+      const Eigen::Vector3d v = body.velocity + body.angular_velocity.cross(r);
+      for (int d = 0; d < 3; ++d) {
+        nodes.du[3 * node + d] = u[d] - nodes.u[3 * node + d];
+        nodes.u[3 * node + d] = u[d];
+        nodes.v[3 * node + d] = v[d];
+      }
+    }
+  }
+}
+
+double DiscreteParts::add_spring_forces(const NodalArrays& nodes, double& energy) {
+  double power = 0;
+  for (const Spring& spring : springs_) {
+    if (spring.a.share > 0) {
+      // One spring per owned node, to the ground or to a body's reference point.
+      Eigen::Vector3d u_b = Eigen::Vector3d::Zero(), v_b = Eigen::Vector3d::Zero();
+      if (spring.b.body >= 0) {
+        u_b = bodies_[spring.b.body].displacement;
+        v_b = bodies_[spring.b.body].velocity;
+      }
+      const Eigen::Vector3d k = spring.a.share * spring.stiffness;
+      const Eigen::Vector3d c = spring.a.share * spring.damping;
+      for (LocalIndex node : spring.a.nodes) {
+        Eigen::Vector3d force;
+        for (int d = 0; d < 3; ++d) {
+          const double stretch = u_b[d] - nodes.u[3 * node + d];
+          const double rate = v_b[d] - nodes.v[3 * node + d];
+          force[d] = k[d] * stretch + c[d] * rate;
+          nodes.residual[3 * node + d] += force[d];
+          energy += 0.5 * k[d] * stretch * stretch;
+          power += c[d] * rate * rate;
+        }
+        if (spring.b.body >= 0)
+          bodies_[spring.b.body].force -= force;
+      }
+    }
+  }
+  return power;
+}
+
+void DiscreteParts::add_body_force(const Spring& spring, const Eigen::Vector3d& force_on_a,
+                                   bool to_b) {
+  bodies_[spring.a.body].force += force_on_a;
+  if (to_b)
+    bodies_[spring.b.body].force -= force_on_a;
+}
+
+void DiscreteParts::correct(double time, double dt, const std::array<double, 3>& gravity,
+                            NodalArrays& nodes, const Communicator& comm) {
+  if (bodies_.empty())
+    return;
+  // Springs between bodies, or from a body to the ground, are added once (on rank 0) before the
+  // sum over ranks.
+  double body_spring_energy = 0, body_spring_power = 0;
+  if (comm.is_root()) {
+    for (const Spring& spring : springs_) {
+      if (spring.a.body < 0)
+        continue;
+      const RigidBody& a = bodies_[spring.a.body];
+      Eigen::Vector3d u_b = Eigen::Vector3d::Zero(), v_b = Eigen::Vector3d::Zero();
+      if (spring.b.body >= 0) {
+        u_b = bodies_[spring.b.body].displacement;
+        v_b = bodies_[spring.b.body].velocity;
+      }
+      const Eigen::Vector3d stretch = u_b - a.displacement, rate = v_b - a.velocity;
+      const Eigen::Vector3d force =
+          spring.stiffness.cwiseProduct(stretch) + spring.damping.cwiseProduct(rate);
+      add_body_force(spring, force, spring.b.body >= 0);
+      body_spring_energy += 0.5 * stretch.dot(spring.stiffness.cwiseProduct(stretch));
+      body_spring_power += rate.dot(spring.damping.cwiseProduct(rate));
+    }
+  }
+  spring_energy_ = body_spring_energy;
+  spring_power_ = body_spring_power;
+  std::vector<double> sums;
+  sums.reserve(6 * bodies_.size());
+  for (RigidBody& body : bodies_) {
+    for (std::size_t i = 0; i < body.nodes.size(); ++i) {
+      const LocalIndex node = body.nodes[i];
+      const Eigen::Vector3d f(nodes.residual[3 * node], nodes.residual[3 * node + 1],
+                              nodes.residual[3 * node + 2]);
+      body.force += f;
+      body.moment += (body.rotation * body.offsets[i]).cross(f);
+    }
+    sums.insert(sums.end(), body.force.data(), body.force.data() + 3);
+    sums.insert(sums.end(), body.moment.data(), body.moment.data() + 3);
+  }
+  comm.sum_in_place(sums);
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    RigidBody& body = bodies_[b];
+    body.force = Eigen::Vector3d(sums[6 * b], sums[6 * b + 1], sums[6 * b + 2]);
+    body.moment = Eigen::Vector3d(sums[6 * b + 3], sums[6 * b + 4], sums[6 * b + 5]);
+    // Loads on the body itself: gravity on its extra mass and applied moments.
+    Eigen::Vector3d own_force = body.extra_mass * vector_of(gravity);
+    Eigen::Vector3d own_moment = Eigen::Vector3d::Zero();
+    for (std::size_t m = 0; m < moments_.size(); ++m)
+      if (moments_[m].body == body.name)
+        own_moment += moment_functions_[m](0, 0, 0, time) * vector_of(moments_[m].moment);
+    body.force += own_force;
+    body.moment += own_moment;
+
+    const Eigen::Vector3d step_rotation = dt * body.angular_velocity;
+    body.work += 0.5 * (own_force + previous_own_force_[b]).dot(body_step_[b]) +
+                 0.5 * (own_moment + previous_own_moment_[b]).dot(step_rotation);
+    previous_own_force_[b] = own_force;
+    previous_own_moment_[b] = own_moment;
+
+    body.acceleration = body.force / body.mass;
+    if (body.rotates) {
+      const Eigen::Matrix3d inertia = body.rotation * body.inertia * body.rotation.transpose();
+      const Eigen::Vector3d& w = body.angular_velocity;
+      body.angular_acceleration = inertia.ldlt().solve(body.moment - w.cross(inertia * w));
+    }
+    for (int d = 0; d < 3; ++d) {
+      if (body.fixed[d])
+        body.acceleration[d] = 0;
+      if (body.fixed[3 + d])
+        body.angular_acceleration[d] = 0;
+    }
+    body.velocity += 0.5 * dt * body.acceleration;
+    body.angular_velocity += 0.5 * dt * body.angular_acceleration;
+    for (std::size_t i = 0; i < body.nodes.size(); ++i) {
+      const LocalIndex node = body.nodes[i];
+      const Eigen::Vector3d r = body.rotation * body.offsets[i];
+      const Eigen::Vector3d& w = body.angular_velocity;
+      const Eigen::Vector3d v = body.velocity + w.cross(r);
+      const Eigen::Vector3d a =
+          body.acceleration + body.angular_acceleration.cross(r) + w.cross(w.cross(r));
+      for (int d = 0; d < 3; ++d) {
+        nodes.v[3 * node + d] = v[d];
+        nodes.a[3 * node + d] = a[d];
+      }
+    }
+  }
+}
+
+double DiscreteParts::kinetic_energy() const {
+  double energy = 0;
+  for (const RigidBody& body : bodies_) {
+    const Eigen::Matrix3d inertia = body.rotation * body.inertia * body.rotation.transpose();
+    energy += 0.5 * body.mass * body.velocity.squaredNorm() +
+              0.5 * body.angular_velocity.dot(inertia * body.angular_velocity);
+  }
+  return energy;
+}
+
+double DiscreteParts::external_work() const {
+  double work = 0;
+  for (const RigidBody& body : bodies_)
+    work += body.work;
+  return work;
+}
+
+std::vector<double> DiscreteParts::state() const {
+  std::vector<double> values;
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const RigidBody& body = bodies_[b];
+    for (const auto* vector : {&body.displacement, &body.velocity, &body.acceleration,
+                               &body.angular_velocity, &body.angular_acceleration,
+                               &previous_own_force_[b], &previous_own_moment_[b], &body_step_[b]})
+      values.insert(values.end(), vector->data(), vector->data() + 3);
+    values.insert(values.end(), body.rotation.data(), body.rotation.data() + 9);
+    values.push_back(body.work);
+  }
+  return values;
+}
+
+void DiscreteParts::restore(const std::vector<double>& values) {
+  std::size_t k = 0;
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    RigidBody& body = bodies_[b];
+    for (auto* vector : {&body.displacement, &body.velocity, &body.acceleration,
+                         &body.angular_velocity, &body.angular_acceleration,
+                         &previous_own_force_[b], &previous_own_moment_[b], &body_step_[b]}) {
+      for (int d = 0; d < 3; ++d)
+        (*vector)[d] = values.at(k++);
+    }
+    for (int i = 0; i < 9; ++i)
+      body.rotation.data()[i] = values.at(k++);
+    body.work = values.at(k++);
+  }
+}
+
+}  // namespace railfe

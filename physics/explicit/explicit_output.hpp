@@ -1,0 +1,90 @@
+#pragma once
+/// \file
+/// What an explicit step writes: <step>_energy.csv (the energy balance), <step>_histories.csv
+/// (node-set means and element stresses), <step>_measurements.csv (arrival, peak and period of
+/// each history, measured from every step), <step>_wave_speeds.csv and <step>.exo snapshots.
+/// Rows already written are kept (rank 0) so that a run resumed from a checkpoint rewrites
+/// complete files.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "framework/base/types.hpp"
+#include "physics/explicit/explicit_settings.hpp"
+
+namespace railfe {
+
+class CsvWriter;
+class ExodusWriter;
+class ExplicitSolver;
+class MeshPartition;
+class OutputDirectory;
+struct EnergyBalance;
+
+/// Events measured on one history from every step.
+struct HistoryEvents {
+  double previous_time = 0;    ///< time of the last sample (s)
+  double previous_value = 0;   ///< the last sample
+  double arrival_time = -1;    ///< first time |value| reached the arrival level (−1: never)
+  double peak_time = 0;        ///< time of the largest |value| (s)
+  double peak_value = 0;       ///< that value
+  double first_crossing = -1;  ///< first upward crossing of the period reference (s)
+  double last_crossing = -1;   ///< last one (s)
+  double crossings = 0;        ///< how many
+  bool started = false;        ///< whether a sample was taken
+  /// Takes the sample \p value at \p time.
+  void sample(double time, double value, double arrival_level, double reference);
+  /// The mean period between the first and last upward crossings (0 with fewer than two).
+  double period() const {
+    return crossings > 1 ? (last_crossing - first_crossing) / (crossings - 1) : 0.0;
+  }
+};
+
+/// Writes the outputs of one explicit step.
+class ExplicitRecorder {
+ public:
+  /// Opens the files of step \p step_name in \p output (collective); \p title names the Exodus
+  /// file.
+  ExplicitRecorder(const ExplicitSettings& settings, const ExplicitSolver& solver,
+                   const MeshPartition& partition, OutputDirectory& output,
+                   const std::string& step_name, const std::string& title, bool write_exodus);
+  ~ExplicitRecorder();
+  /// Samples histories at the solver's current state and writes the rows that are due
+  /// (collective). Returns false, writing nothing, when a value is not finite or the energy
+  /// error exceeds the deck's limit (the run must stop).
+  bool record(bool force_rows);
+  /// The energy balance at the last energy row.
+  const EnergyBalance& last_balance() const;
+  /// Writes an Exodus snapshot if one is due at the current time (collective); \p last forces it.
+  void snapshot(bool last);
+  /// Writes the measurements and wave speeds and closes every file (collective).
+  void finish();
+  /// What a checkpoint must hold to resume the files (rank 0's rows and every rank's events).
+  std::vector<double> state() const;
+  /// Restores state() and rewrites the rows so far (collective).
+  void restore(const std::vector<double>& values);
+
+ private:
+  void write_energy_row();
+  void write_history_row();
+  std::vector<double> element_stresses() const;
+
+  const ExplicitSettings& settings_;
+  const ExplicitSolver& solver_;
+  const MeshPartition& partition_;
+  std::vector<std::vector<LocalIndex>> history_nodes_;
+  std::vector<double> history_counts_;
+  std::vector<LocalIndex> element_rows_;  // kernel index of each element history, or −1
+  std::vector<HistoryEvents> events_;
+  std::unique_ptr<CsvWriter> energy_, histories_;
+  std::unique_ptr<ExodusWriter> exodus_;
+  std::string measurements_path_, wave_speeds_path_;
+  std::vector<std::vector<double>> energy_rows_, history_rows_;
+  std::unique_ptr<EnergyBalance> balance_;
+  double next_snapshot_ = 0;
+  long long last_energy_step_ = -1, last_history_step_ = -1;
+  bool root_;
+};
+
+}  // namespace railfe

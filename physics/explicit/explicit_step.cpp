@@ -1,0 +1,232 @@
+#include "physics/explicit/explicit_step.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "framework/assembly/dof_map.hpp"
+#include "framework/base/error.hpp"
+#include "framework/base/resources.hpp"
+#include "framework/mesh/partition.hpp"
+#include "physics/explicit/checkpoint.hpp"
+#include "physics/explicit/explicit_output.hpp"
+#include "physics/explicit/explicit_solver.hpp"
+
+namespace railfe {
+
+namespace {
+
+std::string seconds_text(double value) {
+  std::ostringstream text;
+  text.precision(4);
+  text << value << " s";
+  return text.str();
+}
+
+// The blow-up message: where the run failed, how, and what the step was. \p balance is null when
+// the forces themselves failed (non-finite, or elements turned inside out).
+std::string blow_up_message(const ExplicitSolver& solver, const EnergyBalance* balance, double dt,
+                            double stable_step, double limit) {
+  std::ostringstream text;
+  text.precision(4);
+  text << "the solution is growing without bound at t = " << solver.time() << " s (step "
+       << solver.n_steps() << "): ";
+  if (balance) {
+    text << "the energy balance failed, energy error " << balance->error << " beyond the limit "
+         << limit << " (kinetic " << balance->kinetic << " J, internal " << balance->internal
+         << " J, external work " << balance->external_work << " J)";
+  } else {
+    text << "the energy balance failed with non-finite forces or inverted elements";
+  }
+  text << ". The step " << dt << " s is " << dt / stable_step << " x the stable step "
+       << stable_step << " s at the start; nothing after this point was written";
+  return text.str();
+}
+
+// Throws InputError when a fixed \p step exceeds the stable \p limit set at \p location.
+void refuse_unstable_step(double step, double limit, const std::string& location,
+                          const std::string& deck, const std::string& path) {
+  if (step <= limit * (1 + 1e-12))
+    return;
+  std::ostringstream problem;
+  problem.precision(6);
+  problem << "is " << step << " s, above the stable limit " << limit << " s (" << step / limit
+          << " x; set by " << location << ")";
+  throw_input_error(deck, path + "/Time step", problem.str(),
+                    "a step up to the stable limit, 0 for automatic (Safety factor x limit), "
+                    "or Allow unstable step true to study the instability");
+}
+
+}  // namespace
+
+ExplicitStep::ExplicitStep(const Teuchos::ParameterList& parameters) : parameters_(&parameters) {}
+
+void ExplicitStep::check(const CheckContext& context) {
+  const Mesh& mesh = context.model.mesh();
+  const std::string& deck = context.source();
+  settings_ = read_explicit_settings(*parameters_, deck, context.path);
+  check_explicit_settings(*settings_, mesh, deck, context.path);
+  materials_ = solid_materials(context.model, "the explicit step '" + context.step_name + "'");
+  for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
+    if (mesh.blocks[b].type != ElementType::hex8)
+      throw_input_error(deck, "Mesh",
+                        "block '" + mesh.blocks[b].name + "' holds " +
+                            element_type_name(mesh.blocks[b].type) +
+                            " elements, which the explicit module does not take",
+                        "hex8 blocks; masses, rigid bodies and springs go under " + context.path +
+                            "/Discrete parts");
+    if (!(materials_->of_block(static_cast<int>(b)).density > 0))
+      throw_input_error(deck, "Materials", "block '" + mesh.blocks[b].name + "' has no density",
+                        "a positive Density for every block of an explicit step");
+  }
+  if (settings_->time_step > 0 && !settings_->allow_unstable_step) {
+    // A fixed step above the elements' limit is refused before anything is written.
+    const MeshPartition& partition = context.model.partition();
+    const SolidElements elements = build_solid_elements(partition, *materials_, settings_->kernel);
+    std::vector<double> coordinates;
+    for (LocalIndex node = 0; node < partition.n_local_nodes(); ++node)
+      coordinates.insert(coordinates.end(), partition.coordinates(node),
+                         partition.coordinates(node) + 3);
+    const auto [limit, location] =
+        smallest_step(elements, partition, elements.stable_step, coordinates.data());
+    refuse_unstable_step(settings_->time_step, limit, location, deck, context.path);
+  }
+  if (!settings_->start_from.empty()) {
+    const auto& steps = context.model.deck().parameters->sublist("Steps");
+    bool found = false;
+    for (auto it = steps.begin(); it != steps.end(); ++it) {
+      const std::string name = steps.name(it);
+      if (name == context.step_name)
+        break;
+      if (name == settings_->start_from) {
+        found = steps.sublist(name).get<std::string>("Module") == "statics";
+      }
+    }
+    if (!found)
+      throw_input_error(deck, context.path + "/Start from",
+                        "names '" + settings_->start_from + "', which is no earlier statics step",
+                        "the name of a statics step listed before this one");
+  }
+}
+
+void ExplicitStep::run(StepContext& context) {
+  Model& model = context.model;
+  const std::string& deck = context.source();
+  const std::string& path = context.path;
+  const ExplicitSettings& settings = *settings_;
+  const Communicator& comm = model.comm();
+  const std::string section = "explicit step '" + context.step_name + "'";
+  Stopwatch clock;
+  const DofMap& dofs = model.dofs(3);
+  ExplicitSolver solver(settings, dofs, *materials_, deck, path);
+  const double setup_seconds = clock.seconds();
+
+  const double* start = nullptr;
+  Teuchos::RCP<TpetraVector> preload;
+  if (!settings.start_from.empty()) {
+    preload = model.field(settings.start_from + "/displacement");
+    if (preload.is_null())
+      throw RunError(path + ": the statics step '" + settings.start_from +
+                     "' left no displacement to start from");
+    start = preload->getData().getRawPtr();
+  }
+  solver.initialise(start);
+  const double initial_stable_step = solver.stable_step();
+  if (!(initial_stable_step > 0) || !std::isfinite(initial_stable_step))
+    throw RunError(path + ": no stable step could be found (degenerate elements or no mass?)");
+  const bool fixed_step = settings.time_step > 0;
+  // The elements' limit was checked before the run; springs and a preload can lower it.
+  if (fixed_step && !settings.allow_unstable_step)
+    refuse_unstable_step(settings.time_step, initial_stable_step, solver.critical_location(), deck,
+                         path);
+
+  ExplicitRecorder recorder(settings, solver, dofs.partition(), context.output, context.step_name,
+                            model.deck().parameters->get<std::string>("Title"),
+                            model.deck().parameters->sublist("Output").get<bool>("Exodus"));
+  const std::string checkpoint_path = context.output.path() + "/" + context.step_name +
+                                      ".checkpoint." + std::to_string(comm.rank());
+  bool restarted = false;
+  if (settings.restart && checkpoint_exists(checkpoint_path, comm)) {
+    const CheckpointSections sections = read_checkpoint(checkpoint_path, comm.n_ranks());
+    if (sections.size() != 4)
+      throw RunError("the checkpoint '" + checkpoint_path + "' has the wrong layout");
+    solver.restore({sections[0], sections[1], sections[2]});
+    recorder.restore(sections[3]);
+    restarted = true;
+  } else {
+    if (!recorder.record(true))
+      throw RunError(path + ": the initial state has a non-finite energy");
+    recorder.snapshot(false);
+  }
+
+  Progress progress = context.progress("time", settings.end_time);
+  Stopwatch loop_clock;
+  const long long first_step = solver.n_steps();
+  double dt = 0;
+  while (solver.time() < settings.end_time * (1 - 1e-12)) {
+    dt = fixed_step ? settings.time_step : settings.safety_factor * solver.stable_step();
+    const double remaining = settings.end_time - solver.time();
+    if (dt > remaining || remaining - dt < 1e-6 * dt)
+      dt = remaining;
+    solver.step(dt);
+    if (!(solver.stable_step() > 0) || !std::isfinite(solver.stable_step()))
+      throw RunError(
+          path + ": " +
+          blow_up_message(solver, nullptr, dt, initial_stable_step, settings.energy_error_limit));
+    if (!recorder.record(false))
+      throw RunError(path + ": " +
+                     blow_up_message(solver, &recorder.last_balance(), dt, initial_stable_step,
+                                     settings.energy_error_limit));
+    recorder.snapshot(false);
+    const long long n = solver.n_steps();
+    if (settings.checkpoint_interval > 0 && n % settings.checkpoint_interval == 0) {
+      const SolverState state = solver.state();
+      write_checkpoint(checkpoint_path, comm.n_ranks(),
+                       {state.scalars, state.arrays, state.discrete, recorder.state()});
+    }
+    if (settings.stop_after_steps > 0 && n - first_step >= settings.stop_after_steps)
+      throw RunError(path + ": stopped after " + std::to_string(settings.stop_after_steps) +
+                     " steps as Checkpoint/Stop after steps asks; resume with Checkpoint/Restart "
+                     "true");
+    progress.update(solver.time());
+  }
+  progress.finish();
+  const double loop_seconds = loop_clock.seconds();
+  if (!recorder.record(true))
+    throw RunError(path + ": " +
+                   blow_up_message(solver, &recorder.last_balance(), dt, initial_stable_step,
+                                   settings.energy_error_limit));
+  recorder.snapshot(true);
+  recorder.finish();
+
+  RunSummary& summary = context.summary;
+  const Mesh& mesh = model.mesh();
+  const long long steps_taken = solver.n_steps() - first_step;
+  const double element_steps =
+      static_cast<double>(mesh.n_elements()) * static_cast<double>(std::max(1LL, steps_taken));
+  summary.add(section, "elements", static_cast<double>(mesh.n_elements()));
+  summary.add(section, "nodes", static_cast<double>(dofs.partition().n_active_nodes()));
+  summary.add(section, "rigid bodies", static_cast<double>(settings.bodies.size()));
+  summary.add(section, "spring-dampers", static_cast<double>(settings.springs.size()));
+  summary.add(section, "total mass", solver.total_mass(), "kg");
+  summary.add(
+      section, "formulation",
+      std::string(settings.kernel.full_integration ? "hex8 full integration" : "hex8 one point") +
+          ", total-Lagrangian St. Venant-Kirchhoff");
+  summary.add(section, "stable step at start", initial_stable_step, "s");
+  summary.add(section, "stable step set by", solver.critical_location());
+  summary.add(section, "step",
+              fixed_step ? "fixed " + seconds_text(settings.time_step)
+                         : "automatic, safety factor " + std::to_string(settings.safety_factor));
+  summary.add(section, "steps", static_cast<double>(solver.n_steps()));
+  if (restarted)
+    summary.add(section, "resumed from checkpoint at step", static_cast<double>(first_step));
+  summary.add(section, "energy error at end", recorder.last_balance().error);
+  summary.add(section, "time: setup", setup_seconds, "s");
+  summary.add(section, "time: stepping", loop_seconds, "s");
+  summary.add(section, "time per element-step (wall x ranks)",
+              1e6 * loop_seconds * comm.n_ranks() / element_steps, "us");
+  summary.add(section, "peak memory per rank",
+              static_cast<double>(peak_resident_bytes()) / 1048576.0, "MiB");
+}
+
+}  // namespace railfe

@@ -1,0 +1,431 @@
+#include "physics/explicit/solid_kernel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+#include <Eigen/Dense>
+
+#include "framework/mesh/hex8_shape.hpp"
+#include "framework/mesh/hex8_topology.hpp"
+#include "framework/mesh/partition.hpp"
+#include "physics/common/solid_assembly.hpp"
+#include "physics/elements/hex8.hpp"
+#include "physics/materials/elastic_material.hpp"
+
+namespace railfe {
+
+namespace {
+
+// Mean gradients b_a / V = (1/V) ∫ ∂N_a/∂X dV (Flanagan–Belytschko), exact with 2×2×2 points;
+// they make one-point elements pass the patch test on distorted meshes. Returns V.
+double mean_gradients(const double x[8][3], double gradient[24]) {
+  const Hex8GaussTable& table = hex8_gauss_table();
+  std::fill(gradient, gradient + 24, 0.0);
+  double volume = 0;
+  for (int q = 0; q < 8; ++q) {
+    double g[3][8];
+    const double det = hex8_gradients(x, table.dN[q], g);
+    volume += det;
+    for (int i = 0; i < 3; ++i)
+      for (int a = 0; a < 8; ++a)
+        gradient[i * 8 + a] += det * g[i][a];
+  }
+  for (int k = 0; k < 24; ++k)
+    gradient[k] /= volume;
+  return volume;
+}
+
+// γ_α = h_α − Σ_i (h_α · X_i) G_i: the hourglass vectors orthogonal to every linear field of the
+// reference element, so rigid motion and homogeneous strain excite no hourglass force.
+void hourglass_vectors(const double x[8][3], const double gradient[24], double gamma[32]) {
+  for (int alpha = 0; alpha < 4; ++alpha) {
+    double h[8];
+    for (int a = 0; a < 8; ++a) {
+      const double* r = kHex8NodeReference[a];
+      const double products[4] = {r[0] * r[1], r[1] * r[2], r[2] * r[0], r[0] * r[1] * r[2]};
+      h[a] = products[alpha];
+    }
+    double projection[3] = {0, 0, 0};
+    for (int i = 0; i < 3; ++i)
+      for (int a = 0; a < 8; ++a)
+        projection[i] += h[a] * x[a][i];
+    for (int a = 0; a < 8; ++a) {
+      gamma[alpha * 8 + a] = h[a];
+      for (int i = 0; i < 3; ++i)
+        gamma[alpha * 8 + a] -= projection[i] * gradient[i * 8 + a];
+    }
+  }
+}
+
+// Largest face area of an element with corners x (Exodus face order).
+double largest_face_area(const double x[8][3]) {
+  double largest = 0;
+  for (const auto& face : kHex8FaceNodes) {
+    const double* p0 = x[face[0]];
+    const double* p1 = x[face[1]];
+    const double* p2 = x[face[2]];
+    const double* p3 = x[face[3]];
+    const double d1[3] = {p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]};
+    const double d2[3] = {p3[0] - p1[0], p3[1] - p1[1], p3[2] - p1[2]};
+    const double c[3] = {d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2],
+                         d1[0] * d2[1] - d1[1] * d2[0]};
+    largest = std::max(largest, c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+  }
+  return 0.5 * std::sqrt(largest);
+}
+
+// ω² of the hourglass stiffness on lumped masses m: C λ_max(Γ), Γ_αβ = Σ_a γ_αa γ_βa / m_a.
+double hourglass_frequency_squared(const double gamma[32], const double masses[8],
+                                   double hourglass_stiffness) {
+  Eigen::Matrix4d gram = Eigen::Matrix4d::Zero();
+  for (int p = 0; p < 4; ++p)
+    for (int q = 0; q < 4; ++q)
+      for (int a = 0; a < 8; ++a)
+        gram(p, q) += gamma[p * 8 + a] * gamma[q * 8 + a] / masses[a];
+  return hourglass_stiffness *
+         Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d>(gram, Eigen::EigenvaluesOnly)
+             .eigenvalues()
+             .maxCoeff();
+}
+
+// Local elements of every hex8 block, ordered by their lowest local node so that neighbouring
+// elements touch neighbouring memory.
+std::vector<std::pair<const LocalBlock*, LocalIndex>> ordered_elements(
+    const MeshPartition& partition, std::vector<LocalIndex>& partition_index,
+    std::vector<GlobalIndex>& global_element) {
+  std::vector<std::pair<const LocalBlock*, LocalIndex>> elements;
+  std::vector<LocalIndex> key;
+  const auto& blocks = partition.blocks();
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    const LocalBlock& block = blocks[b];
+    if (partition.mesh().blocks[block.block].type != ElementType::hex8)
+      continue;
+    for (LocalIndex e = 0; e < block.n_elements(); ++e) {
+      elements.emplace_back(&block, e);
+      partition_index.push_back(partition.first_local_element(b) + e);
+      global_element.push_back(partition.mesh().blocks[block.block].first_element +
+                               block.elements[e]);
+      const LocalIndex* nodes = &block.connectivity[block.offsets[e]];
+      key.push_back(*std::min_element(nodes, nodes + 8));
+    }
+  }
+  std::vector<std::size_t> order(elements.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
+  std::vector<std::pair<const LocalBlock*, LocalIndex>> sorted;
+  std::vector<LocalIndex> sorted_index;
+  std::vector<GlobalIndex> sorted_global;
+  for (std::size_t i : order) {
+    sorted.push_back(elements[i]);
+    sorted_index.push_back(partition_index[i]);
+    sorted_global.push_back(global_element[i]);
+  }
+  partition_index = sorted_index;
+  global_element = sorted_global;
+  return sorted;
+}
+
+}  // namespace
+
+SolidElements build_solid_elements(const MeshPartition& partition, const MaterialTable& materials,
+                                   const SolidKernelSettings& settings) {
+  SolidElements elements;
+  const auto order = ordered_elements(partition, elements.partition_index, elements.global_element);
+  const LocalIndex n = static_cast<LocalIndex>(order.size());
+  const int n_points = settings.full_integration ? 8 : 1;
+  elements.n_elements = n;
+  elements.n_points = n_points;
+  elements.nodes.resize(8 * static_cast<std::size_t>(n));
+  elements.gradients.resize(24 * static_cast<std::size_t>(n) * n_points);
+  elements.weights.resize(static_cast<std::size_t>(n) * n_points);
+  for (auto* field :
+       {&elements.volume, &elements.lambda, &elements.mu, &elements.density, &elements.wave_speed,
+        &elements.hourglass_scale, &elements.stable_step, &elements.length})
+    field->resize(n);
+  if (!settings.full_integration)
+    elements.gamma.resize(32 * static_cast<std::size_t>(n));
+
+  const Hex8GaussTable& table = hex8_gauss_table();
+  for (LocalIndex e = 0; e < n; ++e) {
+    const LocalBlock& block = *order[e].first;
+    const LocalIndex local = order[e].second;
+    std::copy_n(&block.connectivity[block.offsets[local]], 8, &elements.nodes[8 * e]);
+    double x[8][3];
+    element_coordinates(partition, block, local, x);
+    const ElasticMaterial& material = materials.of_block(block.block);
+    const LameConstants lame = material.lame();
+    elements.lambda[e] = lame.lambda;
+    elements.mu[e] = lame.mu;
+    elements.density[e] = material.density;
+    elements.wave_speed[e] = std::sqrt((lame.lambda + 2 * lame.mu) / material.density);
+
+    double mass[24 * 24];
+    hex8_mass(x, material.density, true, mass);
+    double masses[8];
+    for (int a = 0; a < 8; ++a)
+      masses[a] = mass[(3 * a) * 24 + 3 * a];
+
+    double* gradient = &elements.gradients[24 * static_cast<std::size_t>(e) * n_points];
+    double hourglass_omega2 = 0;
+    if (settings.full_integration) {
+      double volume = 0;
+      for (int q = 0; q < 8; ++q) {
+        double g[3][8];
+        const double det = hex8_gradients(x, table.dN[q], g);
+        elements.weights[8 * e + q] = det;
+        volume += det;
+        for (int i = 0; i < 3; ++i)
+          std::copy_n(g[i], 8, gradient + 24 * q + 8 * i);
+      }
+      elements.volume[e] = volume;
+    } else {
+      const double volume = mean_gradients(x, gradient);
+      elements.volume[e] = volume;
+      elements.weights[e] = volume;
+      double* gamma = &elements.gamma[32 * e];
+      hourglass_vectors(x, gradient, gamma);
+      double gradient_norm = 0;
+      for (int k = 0; k < 24; ++k)
+        gradient_norm += gradient[k] * gradient[k];
+      const double kappa = settings.hourglass_coefficient;
+      double stiffness = 0;
+      if (settings.hourglass == HourglassForm::stiffness) {
+        stiffness = kappa * (lame.lambda + 2 * lame.mu) * volume * gradient_norm / 3;
+        elements.hourglass_scale[e] = stiffness;
+      } else if (settings.hourglass == HourglassForm::viscous) {
+        elements.hourglass_scale[e] =
+            kappa * material.density * elements.wave_speed[e] * std::cbrt(volume * volume) / 4;
+      }
+      if (stiffness > 0)
+        hourglass_omega2 = hourglass_frequency_squared(gamma, masses, stiffness);
+    }
+    // L / c_P: the period of the mesh's highest (checkerboard) mode on uniform meshes.
+    elements.length[e] = elements.volume[e] / largest_face_area(x);
+    elements.stable_step[e] = elements.length[e] / elements.wave_speed[e];
+    if (hourglass_omega2 > 0)
+      elements.stable_step[e] = std::min(elements.stable_step[e], 2 / std::sqrt(hourglass_omega2));
+  }
+  return elements;
+}
+
+namespace {
+
+// Adds the forces of one integration point with gradients g (g[i*8+a]) and weight w (reference
+// volume) and returns its strain energy; accumulates bulk-viscous power and returns the rate of
+// volume change tr(Ḟ F⁻¹) through div.
+inline double add_point_forces(const double* g, double w, const double ue[8][3],
+                               const double ve[8][3], double lambda, double mu, double density,
+                               double wave_speed, double length, const SolidKernelSettings& s,
+                               double fe[8][3], double& viscous_power, double& jacobian,
+                               double& div) {
+  double H[3][3] = {};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      double sum = 0;
+      for (int a = 0; a < 8; ++a)
+        sum += ue[a][i] * g[j * 8 + a];
+      H[i][j] = sum;
+    }
+  double E[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      E[i][j] =
+          0.5 * (H[i][j] + H[j][i] + H[0][i] * H[0][j] + H[1][i] * H[1][j] + H[2][i] * H[2][j]);
+  const double trace = E[0][0] + E[1][1] + E[2][2];
+  double S[3][3];
+  double contraction = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      S[i][j] = 2 * mu * E[i][j] + (i == j ? lambda * trace : 0.0);
+      contraction += E[i][j] * E[i][j];
+    }
+  double F[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      F[i][j] = H[i][j] + (i == j ? 1.0 : 0.0);
+  double P[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      P[i][j] = F[i][0] * S[0][j] + F[i][1] * S[1][j] + F[i][2] * S[2][j];
+
+  // Cofactor J F⁻ᵀ: gives J, the rate of volume change and the bulk-viscous PK1 stress −q J F⁻ᵀ.
+  const double C[3][3] = {
+      {F[1][1] * F[2][2] - F[1][2] * F[2][1], F[1][2] * F[2][0] - F[1][0] * F[2][2],
+       F[1][0] * F[2][1] - F[1][1] * F[2][0]},
+      {F[0][2] * F[2][1] - F[0][1] * F[2][2], F[0][0] * F[2][2] - F[0][2] * F[2][0],
+       F[0][1] * F[2][0] - F[0][0] * F[2][1]},
+      {F[0][1] * F[1][2] - F[0][2] * F[1][1], F[0][2] * F[1][0] - F[0][0] * F[1][2],
+       F[0][0] * F[1][1] - F[0][1] * F[1][0]}};
+  jacobian = F[0][0] * C[0][0] + F[0][1] * C[0][1] + F[0][2] * C[0][2];
+  div = 0;
+  if (s.bulk_linear > 0 || s.bulk_quadratic > 0) {
+    double rate = 0;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        double Fdot = 0;
+        for (int a = 0; a < 8; ++a)
+          Fdot += ve[a][i] * g[j * 8 + a];
+        rate += Fdot * C[i][j];
+      }
+    div = rate / jacobian;
+    if (div < 0) {
+      const double q = density / jacobian * length *
+                       (s.bulk_quadratic * s.bulk_quadratic * length * div * div -
+                        s.bulk_linear * wave_speed * div);
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          P[i][j] -= q * C[i][j];
+      viscous_power += q * (-div) * jacobian * w;
+    }
+  }
+  for (int a = 0; a < 8; ++a)
+    for (int i = 0; i < 3; ++i)
+      fe[a][i] += w * (P[i][0] * g[a] + P[i][1] * g[8 + a] + P[i][2] * g[16 + a]);
+  return w * (0.5 * lambda * trace * trace + mu * contraction);
+}
+
+}  // namespace
+
+SolidForceTotals add_internal_forces(const SolidElements& elements,
+                                     const SolidKernelSettings& settings, const double* coordinates,
+                                     const double* u, const double* v, double* forces) {
+  SolidForceTotals totals;
+  double strain = 0, hourglass_energy = 0, hourglass_power = 0, viscous_power = 0;
+  const int n_points = elements.n_points;
+  const bool stiffness_form = settings.hourglass == HourglassForm::stiffness;
+  const bool hourglass = !settings.full_integration && settings.hourglass != HourglassForm::none;
+  const bool bulk = settings.bulk_linear > 0 || settings.bulk_quadratic > 0;
+  for (LocalIndex e = 0; e < elements.n_elements; ++e) {
+    const LocalIndex* nodes = &elements.nodes[8 * static_cast<std::size_t>(e)];
+    double ue[8][3], ve[8][3], xe[8][3], fe[8][3] = {};
+    for (int a = 0; a < 8; ++a)
+      for (int i = 0; i < 3; ++i) {
+        const std::size_t k = 3 * static_cast<std::size_t>(nodes[a]) + i;
+        ue[a][i] = u[k];
+        ve[a][i] = v[k];
+        xe[a][i] = coordinates[k] + u[k];
+      }
+    // Current characteristic length: current volume over the largest current face.
+    const double lambda = elements.lambda[e], mu = elements.mu[e];
+    const double density = elements.density[e], c = elements.wave_speed[e];
+    const double reference_length = elements.length[e];
+    double length = reference_length;
+    double volume = 0, compression = 0;
+    const double* gradient = &elements.gradients[24 * static_cast<std::size_t>(e) * n_points];
+    for (int q = 0; q < n_points; ++q) {
+      double jacobian = 1, div = 0;
+      const double w = elements.weights[static_cast<std::size_t>(e) * n_points + q];
+      strain += add_point_forces(gradient + 24 * q, w, ue, ve, lambda, mu, density, c, length,
+                                 settings, fe, viscous_power, jacobian, div);
+      volume += jacobian * w;
+      compression = std::min(compression, div);
+    }
+    length = volume / largest_face_area(xe);
+    if (hourglass) {
+      const double* gamma = &elements.gamma[32 * static_cast<std::size_t>(e)];
+      const double scale = elements.hourglass_scale[e];
+      const double(*field)[3] = stiffness_form ? ue : ve;
+      for (int alpha = 0; alpha < 4; ++alpha) {
+        const double* g = gamma + 8 * alpha;
+        double q[3] = {0, 0, 0};
+        for (int a = 0; a < 8; ++a)
+          for (int i = 0; i < 3; ++i)
+            q[i] += g[a] * field[a][i];
+        const double qq = q[0] * q[0] + q[1] * q[1] + q[2] * q[2];
+        if (stiffness_form)
+          hourglass_energy += 0.5 * scale * qq;
+        else
+          hourglass_power += scale * qq;
+        for (int a = 0; a < 8; ++a)
+          for (int i = 0; i < 3; ++i)
+            fe[a][i] += scale * g[a] * q[i];
+      }
+    }
+    for (int a = 0; a < 8; ++a)
+      for (int i = 0; i < 3; ++i)
+        forces[3 * static_cast<std::size_t>(nodes[a]) + i] += fe[a][i];
+
+    double step = elements.stable_step[e] * length / reference_length;
+    if (bulk && compression < 0) {
+      const double xi = settings.bulk_linear + settings.bulk_quadratic * settings.bulk_quadratic *
+                                                   length * (-compression) / c;
+      step /= xi + std::sqrt(1 + xi * xi);
+    }
+    if (step < totals.stable_step) {
+      totals.stable_step = step;
+      totals.critical_element = e;
+    }
+  }
+  totals.strain_energy = strain;
+  totals.hourglass_energy = hourglass_energy;
+  totals.hourglass_power = hourglass_power;
+  totals.viscous_power = viscous_power;
+  return totals;
+}
+
+std::pair<double, std::string> smallest_step(const SolidElements& elements,
+                                             const MeshPartition& partition,
+                                             const std::vector<double>& step,
+                                             const double* coordinates) {
+  const Communicator& comm = partition.comm();
+  LocalIndex critical = -1;
+  double local = 1e300;
+  for (LocalIndex e = 0; e < elements.n_elements; ++e) {
+    if (step[e] < local) {
+      local = step[e];
+      critical = e;
+    }
+  }
+  const double global = comm.min(local);
+  std::vector<double> where;
+  if (critical >= 0 && local == global) {
+    double centre[3] = {0, 0, 0};
+    for (int a = 0; a < 8; ++a)
+      for (int d = 0; d < 3; ++d)
+        centre[d] +=
+            coordinates[3 * static_cast<std::size_t>(elements.nodes[8 * critical + a]) + d] / 8;
+    where = {static_cast<double>(elements.global_element[critical]), centre[0], centre[1],
+             centre[2]};
+  }
+  std::vector<double> first = comm.gather_to_root(where);
+  first.resize(4, 0.0);
+  comm.broadcast(first);
+  const Mesh& mesh = partition.mesh();
+  const auto element = static_cast<GlobalIndex>(first[0]);
+  std::ostringstream text;
+  text << "element " << element + 1 << " of block '" << mesh.blocks[mesh.block_of(element)].name
+       << "' at (" << first[1] << ", " << first[2] << ", " << first[3] << ") m";
+  return {global, text.str()};
+}
+
+void element_cauchy_stress(const SolidElements& elements, LocalIndex e, const double* u,
+                           double stress[6]) {
+  std::fill(stress, stress + 6, 0.0);
+  const LocalIndex* nodes = &elements.nodes[8 * static_cast<std::size_t>(e)];
+  const int n_points = elements.n_points;
+  for (int q = 0; q < n_points; ++q) {
+    const double* g = &elements.gradients[24 * (static_cast<std::size_t>(e) * n_points + q)];
+    double F[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        for (int a = 0; a < 8; ++a)
+          F[i][j] += u[3 * static_cast<std::size_t>(nodes[a]) + i] * g[j * 8 + a];
+    Eigen::Matrix3d Fm;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        Fm(i, j) = F[i][j];
+    const Eigen::Matrix3d E = 0.5 * (Fm.transpose() * Fm - Eigen::Matrix3d::Identity());
+    const Eigen::Matrix3d S =
+        elements.lambda[e] * E.trace() * Eigen::Matrix3d::Identity() + 2 * elements.mu[e] * E;
+    const Eigen::Matrix3d sigma = Fm * S * Fm.transpose() / Fm.determinant();
+    const double values[6] = {sigma(0, 0), sigma(1, 1), sigma(2, 2),
+                              sigma(0, 1), sigma(1, 2), sigma(2, 0)};
+    for (int k = 0; k < 6; ++k)
+      stress[k] += values[k] / n_points;
+  }
+}
+
+}  // namespace railfe
