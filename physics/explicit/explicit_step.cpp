@@ -114,7 +114,7 @@ void ExplicitStep::run(StepContext& context) {
   const std::string& path = context.path;
   const ExplicitSettings& settings = *settings_;
   const Communicator& comm = model.comm();
-  const std::string section = "explicit step '" + context.step_name + "'";
+  const std::string section = "Step " + context.step_name + " (explicit)";
   Stopwatch clock;
   const DofMap& dofs = model.dofs(3);
   ExplicitSolver solver(settings, dofs, *materials_, deck, path);

@@ -1,0 +1,208 @@
+// The explicit hex8 kernel against what must hold for any element: the patch test on a distorted
+// mesh (interior forces cancel, stresses exact), objectivity (a rotated state has rotated stress
+// and the same energies), hourglass vectors blind to linear fields, the stable step of a cube;
+// plus the event measurements and the checkpoint file format.
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+
+#include <gtest/gtest.h>
+#include <Eigen/Dense>
+
+#include "framework/base/error.hpp"
+#include "framework/mesh/box_generator.hpp"
+#include "framework/mesh/partition.hpp"
+#include "physics/explicit/checkpoint.hpp"
+#include "physics/explicit/explicit_output.hpp"
+#include "physics/explicit/solid_kernel.hpp"
+#include "physics/materials/elastic_material.hpp"
+
+namespace railfe {
+namespace {
+
+constexpr double kYoung = 210e9, kPoisson = 0.3, kDensity = 7850;
+
+// A 2 x 2 x 2 box with its centre node moved off the grid (a distorted patch), on one rank.
+struct Patch {
+  Communicator comm{MPI_COMM_SELF};
+  Mesh mesh;
+  std::unique_ptr<MeshPartition> partition;
+  std::unique_ptr<MaterialTable> materials;
+  std::vector<double> x;  // local node coordinates
+  GlobalIndex centre = 13;
+
+  explicit Patch(bool distort = true) {
+    BoxSpec spec;
+    spec.elements = {2, 2, 2};
+    spec.lengths = {0.2, 0.2, 0.2};
+    mesh = generate_box(spec);
+    if (distort) {
+      mesh.coordinates[3 * centre] += 0.013;
+      mesh.coordinates[3 * centre + 1] -= 0.021;
+      mesh.coordinates[3 * centre + 2] += 0.008;
+    }
+    partition = std::make_unique<MeshPartition>(mesh, comm, PartitionMethod::block);
+    Teuchos::ParameterList list;
+    auto& steel = list.sublist("steel");
+    steel.set("Young's modulus", kYoung);
+    steel.set("Poisson's ratio", kPoisson);
+    steel.set("Density", kDensity);
+    steel.set("Blocks", Teuchos::Array<std::string>(1, "block_1"));
+    materials = std::make_unique<MaterialTable>(list, mesh, "test");
+    for (LocalIndex node = 0; node < partition->n_local_nodes(); ++node)
+      x.insert(x.end(), partition->coordinates(node), partition->coordinates(node) + 3);
+  }
+  std::size_t n_values() const { return x.size(); }
+};
+
+Eigen::Matrix3d rotation() {
+  return Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+}
+
+TEST(ExplicitKernel, OnePointPatchTestOnDistortedMesh) {
+  Patch patch;
+  SolidKernelSettings settings;
+  settings.bulk_linear = settings.bulk_quadratic = 0;
+  const SolidElements elements = build_solid_elements(*patch.partition, *patch.materials, settings);
+  // A homogeneous deformation u = A X: every element has F = I + A exactly.
+  Eigen::Matrix3d A;
+  A << 1e-3, 2e-4, -3e-4, 5e-4, -7e-4, 1e-4, 2e-4, 3e-4, 6e-4;
+  std::vector<double> u(patch.n_values()), v(patch.n_values(), 0.0), f(patch.n_values(), 0.0);
+  for (std::size_t n = 0; n < u.size() / 3; ++n) {
+    const Eigen::Vector3d X(patch.x[3 * n], patch.x[3 * n + 1], patch.x[3 * n + 2]);
+    const Eigen::Vector3d displacement = A * X;
+    for (int d = 0; d < 3; ++d)
+      u[3 * n + d] = displacement[d];
+  }
+  const SolidForceTotals totals =
+      add_internal_forces(elements, settings, patch.x.data(), u.data(), v.data(), f.data());
+  // The interior node's forces cancel (the patch test) and no hourglass energy appears.
+  const LocalIndex centre = patch.partition->local_node(patch.centre);
+  const double scale = std::abs(f[0]) + std::abs(f[1]) + std::abs(f[2]);
+  for (int d = 0; d < 3; ++d)
+    EXPECT_NEAR(f[3 * centre + d], 0.0, 1e-12 * scale);
+  EXPECT_NEAR(totals.hourglass_energy, 0.0, 1e-20);
+  // Stress and energy are the St. Venant-Kirchhoff values of F = I + A.
+  const Eigen::Matrix3d F = Eigen::Matrix3d::Identity() + A;
+  const Eigen::Matrix3d E = 0.5 * (F.transpose() * F - Eigen::Matrix3d::Identity());
+  const double lambda = kYoung * kPoisson / ((1 + kPoisson) * (1 - 2 * kPoisson));
+  const double mu = kYoung / (2 * (1 + kPoisson));
+  const Eigen::Matrix3d S = lambda * E.trace() * Eigen::Matrix3d::Identity() + 2 * mu * E;
+  const Eigen::Matrix3d sigma = F * S * F.transpose() / F.determinant();
+  const double energy_density = 0.5 * lambda * std::pow(E.trace(), 2) + mu * E.squaredNorm();
+  EXPECT_NEAR(totals.strain_energy, energy_density * 0.008, 1e-10 * energy_density * 0.008);
+  for (LocalIndex e = 0; e < elements.n_elements; ++e) {
+    double stress[6];
+    element_cauchy_stress(elements, e, u.data(), stress);
+    EXPECT_NEAR(stress[0], sigma(0, 0), 1e-9 * std::abs(sigma(0, 0)));
+    EXPECT_NEAR(stress[3], sigma(0, 1), 1e-9 * std::abs(sigma(0, 0)));
+    EXPECT_NEAR(stress[5], sigma(2, 0), 1e-9 * std::abs(sigma(0, 0)));
+  }
+}
+
+TEST(ExplicitKernel, RotatedStateHasRotatedForcesAndEqualEnergies) {
+  for (const bool full : {false, true}) {
+    Patch patch;
+    SolidKernelSettings settings;
+    settings.full_integration = full;
+    settings.bulk_linear = settings.bulk_quadratic = 0;
+    const SolidElements elements =
+        build_solid_elements(*patch.partition, *patch.materials, settings);
+    // Any deformation, hourglass modes included; then the same deformation rotated by R.
+    std::vector<double> u(patch.n_values()), u_rotated(patch.n_values()), v(patch.n_values(), 0.0);
+    const Eigen::Matrix3d R = rotation();
+    for (std::size_t n = 0; n < u.size() / 3; ++n) {
+      const Eigen::Vector3d X(patch.x[3 * n], patch.x[3 * n + 1], patch.x[3 * n + 2]);
+      const Eigen::Vector3d d(1e-4 * std::sin(31 * X[0] + 7 * X[1] * X[2]),
+                              2e-4 * std::cos(17 * X[1] * X[0]), 1e-4 * X[2] * X[0] * 40);
+      const Eigen::Vector3d rotated = R * (X + d) - X;
+      for (int k = 0; k < 3; ++k) {
+        u[3 * n + k] = d[k];
+        u_rotated[3 * n + k] = rotated[k];
+      }
+    }
+    std::vector<double> f(patch.n_values(), 0.0), f_rotated(patch.n_values(), 0.0);
+    const auto totals =
+        add_internal_forces(elements, settings, patch.x.data(), u.data(), v.data(), f.data());
+    const auto rotated = add_internal_forces(elements, settings, patch.x.data(), u_rotated.data(),
+                                             v.data(), f_rotated.data());
+    EXPECT_NEAR(rotated.strain_energy, totals.strain_energy, 1e-10 * totals.strain_energy);
+    EXPECT_NEAR(rotated.hourglass_energy, totals.hourglass_energy,
+                1e-10 * totals.strain_energy + 1e-30);
+    if (!full) {
+      EXPECT_GT(totals.hourglass_energy, 0.0);
+    }
+    double largest = 0;
+    for (double value : f)
+      largest = std::max(largest, std::abs(value));
+    for (std::size_t n = 0; n < u.size() / 3; ++n) {
+      const Eigen::Vector3d expected = R * Eigen::Vector3d(f[3 * n], f[3 * n + 1], f[3 * n + 2]);
+      for (int k = 0; k < 3; ++k)
+        EXPECT_NEAR(f_rotated[3 * n + k], expected[k], 1e-9 * largest) << (full ? "full" : "one");
+    }
+  }
+}
+
+TEST(ExplicitKernel, HourglassVectorsIgnoreLinearFields) {
+  Patch patch;
+  const SolidElements elements =
+      build_solid_elements(*patch.partition, *patch.materials, SolidKernelSettings{});
+  for (LocalIndex e = 0; e < elements.n_elements; ++e) {
+    for (int alpha = 0; alpha < 4; ++alpha) {
+      const double* gamma = &elements.gamma[32 * e + 8 * alpha];
+      double constant = 0, linear[3] = {0, 0, 0};
+      for (int a = 0; a < 8; ++a) {
+        constant += gamma[a];
+        for (int d = 0; d < 3; ++d)
+          linear[d] += gamma[a] * patch.x[3 * elements.nodes[8 * e + a] + d];
+      }
+      EXPECT_NEAR(constant, 0.0, 1e-12);
+      for (double value : linear)
+        EXPECT_NEAR(value, 0.0, 1e-13);
+    }
+  }
+}
+
+TEST(ExplicitKernel, StableStepOfCubeIsEdgeOverWaveSpeed) {
+  Patch patch(false);
+  SolidKernelSettings settings;
+  const SolidElements elements = build_solid_elements(*patch.partition, *patch.materials, settings);
+  const double lambda = kYoung * kPoisson / ((1 + kPoisson) * (1 - 2 * kPoisson));
+  const double mu = kYoung / (2 * (1 + kPoisson));
+  const double wave_speed = std::sqrt((lambda + 2 * mu) / kDensity);
+  for (LocalIndex e = 0; e < elements.n_elements; ++e)
+    EXPECT_NEAR(elements.stable_step[e], 0.1 / wave_speed, 1e-12 * 0.1 / wave_speed);
+}
+
+TEST(HistoryEvents, ArrivalAndPeriodOfASampledSine) {
+  HistoryEvents events;
+  const double period = 0.37, dt = 0.37 / 50.3;
+  for (int n = 0; n <= 1000; ++n) {
+    const double t = n * dt;
+    events.sample(t, t < 0.1 ? 0.0 : std::sin(2 * M_PI * (t - 0.1) / period), 0.5, 0.0);
+  }
+  // Upward crossings of a sine: linear interpolation is exact to O(dt^3) at its inflection.
+  EXPECT_NEAR(events.period(), period, 1e-6 * period);
+  // First |value| = 0.5 at t = 0.1 + period / 12, within the linear interpolation error.
+  EXPECT_NEAR(events.arrival_time, 0.1 + period / 12, 1e-3 * period);
+  EXPECT_NEAR(std::abs(events.peak_value), 1.0, 1e-2);
+}
+
+TEST(Checkpoint, RoundTripAndRefusals) {
+  const std::string path = testing::TempDir() + "/railfe_checkpoint_test";
+  const CheckpointSections sections = {{1.5, 2.5}, {}, {3, 4, 5}};
+  write_checkpoint(path, 2, sections);
+  EXPECT_EQ(read_checkpoint(path, 2), sections);
+  EXPECT_THROW(read_checkpoint(path, 1), RunError);
+  // A file cut short is refused, not half read.
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::ofstream(path, std::ios::binary) << bytes.substr(0, bytes.size() - 5);
+  EXPECT_THROW(read_checkpoint(path, 2), RunError);
+  std::remove(path.c_str());
+}
+
+}  // namespace
+}  // namespace railfe
