@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "framework/assembly/dof_map.hpp"
 #include "framework/base/error.hpp"
 #include "physics/common/solid_assembly.hpp"
 #include "physics/elements/hex8.hpp"
 #include "physics/explicit/ghost_exchange.hpp"
+#include "physics/explicit/lanczos.hpp"
 #include "physics/explicit/nodal_conditions.hpp"
 #include "physics/materials/elastic_material.hpp"
 
@@ -135,7 +137,50 @@ void ExplicitSolver::evaluate_forces(double time) {
   spring_energy_ = 0;
   NodalArrays nodes = arrays();
   damper_power_ = discrete_->add_spring_forces(nodes, spring_energy_);
-  stable_step_ = std::min(comm_.min(totals_.stable_step), discrete_->stable_step());
+  stable_step_ =
+      std::min(comm_.min(totals_.stable_step) * step_calibration_, discrete_->stable_step());
+}
+
+void ExplicitSolver::calibrate_stable_step() {
+  // The operator M^-½ K M^-½ of the solids, K applied as a difference of internal forces about
+  // the current state; elastic only (no bulk viscosity, no viscous hourglass forces).
+  SolidKernelSettings elastic = settings_.kernel;
+  elastic.bulk_linear = elastic.bulk_quadratic = 0;
+  const std::size_t n_local = u_.size();
+  std::vector<double> zero(n_local, 0.0), base_force(n_local, 0.0), trial(n_local), force(n_local);
+  add_internal_forces(elements_, elastic, x_.data(), u_.data(), zero.data(), base_force.data());
+  ghosts_->sum_into_owners(base_force.data());
+  double shortest = 1e300;
+  for (double length : elements_.length)
+    shortest = std::min(shortest, length);
+  shortest = comm_.min(shortest);
+  auto apply = [&](const double* q, double* w) {
+    double largest = 0;
+    for (std::size_t k = 0; k < n_owned_dofs_; ++k)
+      largest = std::max(largest, std::abs(q[k]) / std::sqrt(mass_[k / 3]));
+    // A perturbation of 1e-6 element lengths: linear to 1e-6, far above round-off.
+    const double scale = 1e-6 * shortest / comm_.max(largest);
+    trial = u_;
+    for (std::size_t k = 0; k < n_owned_dofs_; ++k)
+      trial[k] += scale * q[k] / std::sqrt(mass_[k / 3]);
+    std::fill(zero.begin(), zero.end(), 0.0);
+    ghosts_->update_ghosts(trial.data(), zero.data());
+    std::fill(force.begin(), force.end(), 0.0);
+    add_internal_forces(elements_, elastic, x_.data(), trial.data(), zero.data(), force.data());
+    ghosts_->sum_into_owners(force.data());
+    for (std::size_t k = 0; k < n_owned_dofs_; ++k)
+      w[k] = (force[k] - base_force[k]) / scale / std::sqrt(mass_[k / 3]);
+  };
+  std::vector<GlobalIndex> seeds(n_owned_dofs_);
+  for (std::size_t k = 0; k < n_owned_dofs_; ++k)
+    seeds[k] = 3 * dofs_.partition().global_node(static_cast<LocalIndex>(k / 3)) + k % 3;
+  const double lambda = largest_eigenvalue(apply, seeds, comm_);
+  double element_step = 1e300;
+  for (double step : elements_.stable_step)
+    element_step = std::min(element_step, step);
+  element_step = comm_.min(element_step);
+  if (lambda > 0 && element_step < 1e300)
+    step_calibration_ = 2 / std::sqrt(lambda) / element_step;
 }
 
 void ExplicitSolver::initialise(const double* start) {
@@ -158,6 +203,7 @@ void ExplicitSolver::initialise(const double* start) {
   NodalArrays nodes = arrays();
   discrete_->initialise_nodes(nodes);
   ghosts_->update_ghosts(u_.data(), v_.data());
+  calibrate_stable_step();
   evaluate_forces(0);
   discrete_->correct(0, 0, gravity_now_, nodes, comm_);
   external_ = applied_;
@@ -290,7 +336,11 @@ double ExplicitSolver::total_mass() const {
 std::string ExplicitSolver::critical_location() const {
   if (discrete_->stable_step() <= stable_step_)
     return "a spring-damper of Discrete parts";
-  return smallest_step(elements_, dofs_.partition(), elements_.stable_step, x_.data()).second;
+  std::ostringstream text;
+  text.precision(4);
+  text << smallest_step(elements_, dofs_.partition(), elements_.stable_step, x_.data()).second
+       << ", L/c_P x " << step_calibration_ << " from the mesh's highest frequency";
+  return text.str();
 }
 
 SolverState ExplicitSolver::state() const {

@@ -56,7 +56,11 @@ class ExplicitSolver {
   void initialise(const double* start);
   /// Advances by \p dt (collective).
   void step(double dt);
-  /// Stable step at the current state over all ranks, before the safety factor (s).
+  /// Global over element-by-element stable step at the start: the Lanczos estimate of the
+  /// mesh's highest frequency, 2/ω_max, over the smallest L/c_P.
+  double step_calibration() const { return step_calibration_; }
+  /// Stable step at the current state over all ranks, before the safety factor (s): each
+  /// element's L/c_P (reduced by bulk viscosity) times step_calibration(), and the springs'.
   double stable_step() const { return stable_step_; }
   /// Where the stable step is smallest, for messages ("element 12 of block 'rail' at (x, y, z)"
   /// or "spring–dampers").
@@ -92,6 +96,7 @@ class ExplicitSolver {
 
  private:
   void evaluate_forces(double time);
+  void calibrate_stable_step();
   NodalArrays arrays();
   double kinetic_energy_local() const;
 
@@ -115,6 +120,7 @@ class ExplicitSolver {
   double time_ = 0, last_step_ = 0;
   long long n_steps_ = 0;
   double stable_step_ = 0;
+  double step_calibration_ = 1;  // global (Lanczos) limit over the element estimate at the start
   int critical_rank_ = 0;
   LocalIndex critical_element_ = -1;
   SolidForceTotals totals_;

@@ -349,7 +349,9 @@ SolidForceTotals add_internal_forces(const SolidElements& elements,
         forces[3 * static_cast<std::size_t>(nodes[a]) + i] += fe[a][i];
 
     double step = elements.stable_step[e] * length / reference_length;
-    if (bulk && compression < 0) {
+    if (bulk) {
+      // The linear term always counts, so the step does not jump when round-off flips the sign
+      // of a vanishing volume rate; the quadratic one grows continuously from zero.
       const double xi = settings.bulk_linear + settings.bulk_quadratic * settings.bulk_quadratic *
                                                    length * (-compression) / c;
       step /= xi + std::sqrt(1 + xi * xi);

@@ -16,6 +16,7 @@
 #include "framework/mesh/partition.hpp"
 #include "physics/explicit/checkpoint.hpp"
 #include "physics/explicit/explicit_output.hpp"
+#include "physics/explicit/lanczos.hpp"
 #include "physics/explicit/solid_kernel.hpp"
 #include "physics/materials/elastic_material.hpp"
 
@@ -174,6 +175,27 @@ TEST(ExplicitKernel, StableStepOfCubeIsEdgeOverWaveSpeed) {
   const double wave_speed = std::sqrt((lambda + 2 * mu) / kDensity);
   for (LocalIndex e = 0; e < elements.n_elements; ++e)
     EXPECT_NEAR(elements.stable_step[e], 0.1 / wave_speed, 1e-12 * 0.1 / wave_speed);
+}
+
+TEST(Lanczos, LargestEigenvalueOfASpringChain) {
+  // N equal masses between fixed ends: eigenvalues (4k/m) sin²(jπ / (2(N+1))), j = 1..N.
+  const int n = 400;
+  const double k_over_m = 2.5e7;
+  std::vector<GlobalIndex> seeds(n);
+  for (int i = 0; i < n; ++i)
+    seeds[i] = i;
+  int products = 0;
+  auto apply = [&](const double* q, double* w) {
+    ++products;
+    for (int i = 0; i < n; ++i)
+      w[i] = k_over_m * (2 * q[i] - (i > 0 ? q[i - 1] : 0.0) - (i + 1 < n ? q[i + 1] : 0.0));
+  };
+  const double exact = 4 * k_over_m * std::pow(std::sin(n * M_PI / (2.0 * (n + 1))), 2);
+  const double estimate = largest_eigenvalue(apply, seeds, Communicator(MPI_COMM_SELF));
+  // The Ritz value approaches from below; the top of this spectrum is as dense as a mesh's.
+  EXPECT_LE(estimate, exact * (1 + 1e-12));
+  EXPECT_NEAR(estimate, exact, 2e-3 * exact);
+  EXPECT_LE(products, 80);
 }
 
 TEST(HistoryEvents, ArrivalAndPeriodOfASampledSine) {
