@@ -147,7 +147,9 @@ void ExplicitSolver::calibrate_stable_step() {
   SolidKernelSettings elastic = settings_.kernel;
   elastic.bulk_linear = elastic.bulk_quadratic = 0;
   const std::size_t n_local = u_.size();
-  std::vector<double> zero(n_local, 0.0), base_force(n_local, 0.0), trial(n_local), force(n_local);
+  // force_ is free until the first force evaluation: it serves as the force buffer.
+  std::vector<double>& force = force_;
+  std::vector<double> zero(n_local, 0.0), base_force(n_local, 0.0), trial(n_local);
   add_internal_forces(elements_, elastic, x_.data(), u_.data(), zero.data(), base_force.data());
   ghosts_->sum_into_owners(base_force.data());
   double shortest = 1e300;

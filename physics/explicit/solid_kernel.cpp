@@ -37,25 +37,39 @@ double mean_gradients(const double x[8][3], double gradient[24]) {
   return volume;
 }
 
-// γ_α = h_α − Σ_i (h_α · X_i) G_i: the hourglass vectors orthogonal to every linear field of the
-// reference element, so rigid motion and homogeneous strain excite no hourglass force.
-void hourglass_vectors(const double x[8][3], const double gradient[24], double gamma[32]) {
-  for (int alpha = 0; alpha < 4; ++alpha) {
-    double h[8];
+// The hourglass base vectors h_α (ξη, ηζ, ζξ, ξηζ at the nodes).
+struct HourglassBase {
+  double h[4][8];
+  HourglassBase() {
     for (int a = 0; a < 8; ++a) {
       const double* r = kHex8NodeReference[a];
       const double products[4] = {r[0] * r[1], r[1] * r[2], r[2] * r[0], r[0] * r[1] * r[2]};
-      h[a] = products[alpha];
+      for (int alpha = 0; alpha < 4; ++alpha)
+        h[alpha][a] = products[alpha];
     }
-    double projection[3] = {0, 0, 0};
-    for (int i = 0; i < 3; ++i)
+  }
+};
+const HourglassBase kHourglassBase;
+
+// The projections h_α · X_i of an element's reference coordinates (12 numbers).
+void hourglass_projections(const double x[8][3], double projection[12]) {
+  for (int alpha = 0; alpha < 4; ++alpha)
+    for (int i = 0; i < 3; ++i) {
+      double sum = 0;
       for (int a = 0; a < 8; ++a)
-        projection[i] += h[a] * x[a][i];
-    for (int a = 0; a < 8; ++a) {
-      gamma[alpha * 8 + a] = h[a];
-      for (int i = 0; i < 3; ++i)
-        gamma[alpha * 8 + a] -= projection[i] * gradient[i * 8 + a];
+        sum += kHourglassBase.h[alpha][a] * x[a][i];
+      projection[alpha * 3 + i] = sum;
     }
+}
+
+// γ_α = h_α − Σ_i (h_α · X_i) G_i from the projections and the mean gradients.
+inline void hourglass_from_projections(const double* projection, const double* gradient,
+                                       double gamma[32]) {
+  for (int alpha = 0; alpha < 4; ++alpha) {
+    const double* p = projection + 3 * alpha;
+    for (int a = 0; a < 8; ++a)
+      gamma[alpha * 8 + a] = kHourglassBase.h[alpha][a] - p[0] * gradient[a] -
+                             p[1] * gradient[8 + a] - p[2] * gradient[16 + a];
   }
 }
 
@@ -146,7 +160,7 @@ SolidElements build_solid_elements(const MeshPartition& partition, const Materia
         &elements.hourglass_scale, &elements.stable_step, &elements.length})
     field->resize(n);
   if (!settings.full_integration)
-    elements.gamma.resize(32 * static_cast<std::size_t>(n));
+    elements.hourglass_projection.resize(12 * static_cast<std::size_t>(n));
 
   const Hex8GaussTable& table = hex8_gauss_table();
   for (LocalIndex e = 0; e < n; ++e) {
@@ -185,8 +199,10 @@ SolidElements build_solid_elements(const MeshPartition& partition, const Materia
       const double volume = mean_gradients(x, gradient);
       elements.volume[e] = volume;
       elements.weights[e] = volume;
-      double* gamma = &elements.gamma[32 * e];
-      hourglass_vectors(x, gradient, gamma);
+      double* projection = &elements.hourglass_projection[12 * static_cast<std::size_t>(e)];
+      hourglass_projections(x, projection);
+      double gamma[32];
+      hourglass_from_projections(projection, gradient, gamma);
       double gradient_norm = 0;
       for (int k = 0; k < 24; ++k)
         gradient_norm += gradient[k] * gradient[k];
@@ -325,7 +341,9 @@ SolidForceTotals add_internal_forces(const SolidElements& elements,
     }
     length = volume / largest_face_area(xe);
     if (hourglass) {
-      const double* gamma = &elements.gamma[32 * static_cast<std::size_t>(e)];
+      double gamma[32];
+      hourglass_from_projections(&elements.hourglass_projection[12 * static_cast<std::size_t>(e)],
+                                 gradient, gamma);
       const double scale = elements.hourglass_scale[e];
       const double(*field)[3] = stiffness_form ? ue : ve;
       for (int alpha = 0; alpha < 4; ++alpha) {
@@ -401,6 +419,11 @@ std::pair<double, std::string> smallest_step(const SolidElements& elements,
   text << "element " << element + 1 << " of block '" << mesh.blocks[mesh.block_of(element)].name
        << "' at (" << first[1] << ", " << first[2] << ", " << first[3] << ") m";
   return {global, text.str()};
+}
+
+void hourglass_vectors(const SolidElements& elements, LocalIndex e, double gamma[32]) {
+  hourglass_from_projections(&elements.hourglass_projection[12 * static_cast<std::size_t>(e)],
+                             &elements.gradients[24 * static_cast<std::size_t>(e)], gamma);
 }
 
 void element_cauchy_stress(const SolidElements& elements, LocalIndex e, const double* u,

@@ -42,10 +42,12 @@ struct SolidElements {
   std::vector<LocalIndex> nodes;            ///< 8 local node indices per element
   std::vector<LocalIndex> partition_index;  ///< element's index in the partition's block order
   std::vector<GlobalIndex> global_element;  ///< element's global index in the mesh
-  std::vector<double> gradients;        ///< per point: ∂N_a/∂X_i at [i × 8 + a] (24 per point)
-  std::vector<double> weights;          ///< per point: Gauss weight × det J (reference volume)
-  std::vector<double> volume;           ///< reference volume (m³)
-  std::vector<double> gamma;            ///< hourglass base vectors, [α × 8 + a] (32 per element)
+  std::vector<double> gradients;  ///< per point: ∂N_a/∂X_i at [i × 8 + a] (24 per point)
+  std::vector<double> weights;    ///< per point: Gauss weight × det J (reference volume)
+  std::vector<double> volume;     ///< reference volume (m³)
+  /// h_α · X_i, [α × 3 + i] (12 per element): the hourglass vectors γ_α = h_α − Σ_i (h_α·X_i)
+  /// ∇₀N̄_i are rebuilt from them in the kernel, which costs less than reading 32 numbers.
+  std::vector<double> hourglass_projection;
   std::vector<double> lambda;           ///< Lamé λ (Pa)
   std::vector<double> mu;               ///< shear modulus μ (Pa)
   std::vector<double> density;          ///< reference density ρ₀ (kg/m³)
@@ -89,6 +91,9 @@ std::pair<double, std::string> smallest_step(const SolidElements& elements,
                                              const MeshPartition& partition,
                                              const std::vector<double>& step,
                                              const double* coordinates);
+
+/// The hourglass vectors γ_α of one-point element \p e, [α × 8 + a].
+void hourglass_vectors(const SolidElements& elements, LocalIndex e, double gamma[32]);
 
 /// Cauchy stress at the centre of element \p e (xx, yy, zz, xy, yz, zx, Pa) for displacements
 /// \p u: σ = J⁻¹ F S Fᵀ.

@@ -151,8 +151,10 @@ TEST(ExplicitKernel, HourglassVectorsIgnoreLinearFields) {
   const SolidElements elements =
       build_solid_elements(*patch.partition, *patch.materials, SolidKernelSettings{});
   for (LocalIndex e = 0; e < elements.n_elements; ++e) {
+    double vectors[32];
+    hourglass_vectors(elements, e, vectors);
     for (int alpha = 0; alpha < 4; ++alpha) {
-      const double* gamma = &elements.gamma[32 * e + 8 * alpha];
+      const double* gamma = vectors + 8 * alpha;
       double constant = 0, linear[3] = {0, 0, 0};
       for (int a = 0; a < 8; ++a) {
         constant += gamma[a];
