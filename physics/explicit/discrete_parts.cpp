@@ -4,6 +4,7 @@
 
 #include "framework/base/error.hpp"
 #include "framework/mesh/partition.hpp"
+#include "physics/explicit/nodal_conditions.hpp"
 
 namespace railfe {
 
@@ -21,17 +22,6 @@ Eigen::Matrix3d rotation_of(const Eigen::Vector3d& w) {
   return Eigen::AngleAxisd(angle, w / angle).toRotationMatrix();
 }
 
-// Owned local nodes of a node set.
-std::vector<LocalIndex> owned_nodes(const MeshPartition& partition, const std::string& set) {
-  std::vector<LocalIndex> nodes;
-  for (GlobalIndex node : partition.mesh().node_set(set, "", "").nodes) {
-    const LocalIndex local = partition.local_node(node);
-    if (local >= 0 && local < partition.n_owned_nodes())
-      nodes.push_back(local);
-  }
-  return nodes;
-}
-
 }  // namespace
 
 DiscreteParts::DiscreteParts(const ExplicitSettings& settings, const MeshPartition& partition,
@@ -46,7 +36,7 @@ DiscreteParts::DiscreteParts(const ExplicitSettings& settings, const MeshPartiti
     body.extra_mass = spec.mass;
     body.fixed = spec.fixed;
     if (!spec.node_set.empty())
-      body.nodes = owned_nodes(partition, spec.node_set);
+      body.nodes = owned_set_nodes(partition, spec.node_set);
     // Mass and centroid of the carried nodes, summed over ranks.
     std::vector<double> sums(4, 0.0);
     for (LocalIndex node : body.nodes) {
@@ -122,7 +112,7 @@ DiscreteParts::DiscreteParts(const ExplicitSettings& settings, const MeshPartiti
         return end;
       end.body = body_index(name);
       if (end.body < 0) {
-        end.nodes = owned_nodes(partition, name);
+        end.nodes = owned_set_nodes(partition, name);
         end.share = 1.0 / static_cast<double>(comm.sum(static_cast<long long>(end.nodes.size())));
       }
       return end;

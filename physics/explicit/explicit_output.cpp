@@ -9,6 +9,7 @@
 #include "framework/output/field_gather.hpp"
 #include "framework/output/output_directory.hpp"
 #include "physics/explicit/explicit_solver.hpp"
+#include "physics/explicit/nodal_conditions.hpp"
 
 namespace railfe {
 
@@ -73,13 +74,8 @@ ExplicitRecorder::ExplicitRecorder(const ExplicitSettings& settings, const Expli
   std::vector<std::string> columns = {"time_s"};
   for (const HistorySpec& history : settings.histories) {
     std::vector<LocalIndex> nodes;
-    if (!history.node_set.empty()) {
-      for (GlobalIndex node : mesh.node_set(history.node_set, "", "").nodes) {
-        const LocalIndex local = partition.local_node(node);
-        if (local >= 0 && local < partition.n_owned_nodes())
-          nodes.push_back(local);
-      }
-    }
+    if (!history.node_set.empty())
+      nodes = owned_set_nodes(partition, history.node_set);
     history_counts_.push_back(
         history.node_set.empty()
             ? 1.0

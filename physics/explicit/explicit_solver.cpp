@@ -17,22 +17,6 @@ namespace railfe {
 
 namespace {
 
-// Owned local nodes of a node set ("" = every owned node).
-std::vector<LocalIndex> owned_set_nodes(const MeshPartition& partition, const std::string& set) {
-  std::vector<LocalIndex> nodes;
-  if (set.empty()) {
-    for (LocalIndex node = 0; node < partition.n_owned_nodes(); ++node)
-      nodes.push_back(node);
-    return nodes;
-  }
-  for (GlobalIndex node : partition.mesh().node_set(set, "", "").nodes) {
-    const LocalIndex local = partition.local_node(node);
-    if (local >= 0 && local < partition.n_owned_nodes())
-      nodes.push_back(local);
-  }
-  return nodes;
-}
-
 // Lumped (row-sum) masses of the hex8 elements, 3 entries per local node (local sums only).
 std::vector<double> element_masses(const MeshPartition& partition, const MaterialTable& materials) {
   std::vector<double> masses(3 * static_cast<std::size_t>(partition.n_local_nodes()), 0.0);

@@ -15,6 +15,7 @@
 namespace railfe {
 
 class DofMap;
+class MeshPartition;
 class MaterialTable;
 
 /// The applied loads (nodal forces and surface loads; gravity is applied through the masses).
@@ -70,6 +71,9 @@ class PrescribedMotions {
   std::vector<char> flags_;
   const double* coordinates_;
 };
+
+/// The owned local nodes of node set \p set of \p partition ("" = every owned node).
+std::vector<LocalIndex> owned_set_nodes(const MeshPartition& partition, const std::string& set);
 
 /// Whether the deck expression \p text uses x, y or z (else it is a function of t alone).
 bool depends_on_position(const std::string& text);
