@@ -130,11 +130,14 @@ void ExplicitSolver::calibrate_stable_step() {
   // the current state; elastic only (no bulk viscosity, no viscous hourglass forces).
   SolidKernelSettings elastic = settings_.kernel;
   elastic.bulk_linear = elastic.bulk_quadratic = 0;
-  const std::size_t n_local = u_.size();
-  // force_ is free until the first force evaluation: it serves as the force buffer.
+  if (elastic.hourglass == HourglassForm::viscous)
+    elastic.hourglass = HourglassForm::none;
+  // Without velocity-dependent forces the kernel ignores v_; force_ and a_ are free until the
+  // first force evaluation and serve as buffers, so the estimate adds one array, not four.
   std::vector<double>& force = force_;
-  std::vector<double> zero(n_local, 0.0), base_force(n_local, 0.0), trial(n_local);
-  add_internal_forces(elements_, elastic, x_.data(), u_.data(), zero.data(), base_force.data());
+  std::vector<double>& trial = a_;
+  std::vector<double> base_force(u_.size(), 0.0);
+  add_internal_forces(elements_, elastic, x_.data(), u_.data(), v_.data(), base_force.data());
   ghosts_->sum_into_owners(base_force.data());
   double shortest = 1e300;
   for (double length : elements_.length)
@@ -149,10 +152,9 @@ void ExplicitSolver::calibrate_stable_step() {
     trial = u_;
     for (std::size_t k = 0; k < n_owned_dofs_; ++k)
       trial[k] += scale * q[k] / std::sqrt(mass_[k / 3]);
-    std::fill(zero.begin(), zero.end(), 0.0);
-    ghosts_->update_ghosts(trial.data(), zero.data());
+    ghosts_->update_ghosts(trial.data(), v_.data());
     std::fill(force.begin(), force.end(), 0.0);
-    add_internal_forces(elements_, elastic, x_.data(), trial.data(), zero.data(), force.data());
+    add_internal_forces(elements_, elastic, x_.data(), trial.data(), v_.data(), force.data());
     ghosts_->sum_into_owners(force.data());
     for (std::size_t k = 0; k < n_owned_dofs_; ++k)
       w[k] = (force[k] - base_force[k]) / scale / std::sqrt(mass_[k / 3]);
@@ -190,6 +192,9 @@ void ExplicitSolver::initialise(const double* start) {
   discrete_->initialise_nodes(nodes);
   ghosts_->update_ghosts(u_.data(), v_.data());
   calibrate_stable_step();
+  // The calibration used a_ as a buffer: the accelerations are set from here on.
+  std::fill(a_.begin(), a_.end(), 0.0);
+  motions_->apply(0, 0, u_.data(), du_.data(), v_.data(), a_.data());
   evaluate_forces(0);
   discrete_->correct(0, 0, gravity_now_, nodes, comm_);
   external_ = applied_;
