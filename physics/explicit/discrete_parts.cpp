@@ -257,8 +257,8 @@ void DiscreteParts::correct(double time, double dt, const std::array<double, 3>&
   }
   spring_energy_ = body_spring_energy;
   spring_power_ = body_spring_power;
-  std::vector<double> sums;
-  sums.reserve(6 * bodies_.size());
+  std::vector<double>& sums = body_sums_;
+  sums.clear();
   for (RigidBody& body : bodies_) {
     for (std::size_t i = 0; i < body.nodes.size(); ++i) {
       const LocalIndex node = body.nodes[i];

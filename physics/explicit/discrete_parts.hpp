@@ -119,6 +119,7 @@ class DiscreteParts {
   std::vector<Expression> moment_functions_;
   double stable_step_ = 1e300;
   double spring_energy_ = 0, spring_power_ = 0;
+  std::vector<double> body_sums_;  // force and moment of every body, summed over ranks
   // Per body: the loads on the body itself at the last step, and this step's ΔU (for their work).
   std::vector<Eigen::Vector3d> previous_own_force_, previous_own_moment_, body_step_;
 };

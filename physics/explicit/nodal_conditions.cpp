@@ -91,6 +91,8 @@ PrescribedMotions::PrescribedMotions(
       for (int component : motions_[m].components)
         motion_of_dof[3 * node + component] = static_cast<int>(m);
   }
+  for (auto& values : values_at_)
+    values.resize(motions_.size());
   for (std::size_t k = 0; k < motion_of_dof.size(); ++k) {
     if (motion_of_dof[k] >= 0) {
       dofs_.push_back({static_cast<LocalIndex>(k), motion_of_dof[k]});
@@ -113,9 +115,7 @@ void PrescribedMotions::apply(double time, double dt, double* u, double* du, dou
   // Derivatives by central differences of the known function, centred on this time: the
   // spacing is the step (consistent with central difference) or, at the start, a short one.
   const double h = dt > 0 ? dt : kDerivativeStep;
-  std::vector<double> at[3];
-  for (auto& values : at)
-    values.resize(motions_.size());
+  std::vector<double>* at = values_at_;
   for (std::size_t m = 0; m < motions_.size(); ++m) {
     if (uniform_[m]) {
       for (int i = 0; i < 3; ++i)

@@ -69,6 +69,8 @@ class PrescribedMotions {
   std::vector<bool> uniform_;
   std::vector<PrescribedDof> dofs_;
   std::vector<char> flags_;
+  // Per condition, its function of time alone at t − h, t, t + h (reused every step).
+  mutable std::vector<double> values_at_[3];
   const double* coordinates_;
 };
 

@@ -22,6 +22,7 @@ minutes on 2 cores, most of it the 120x6x6 cantilever.
 """
 import csv
 import os
+import re
 import sys
 
 import matplotlib
@@ -31,7 +32,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from explicit_stability import max_abs, run_explicit  # noqa: E402
-from railfe_runs import csv_rows, steel_materials_xml  # noqa: E402
+from railfe_runs import csv_rows  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 BAR_SPEED = (210e9 / 7850) ** 0.5  # 5172.19 m/s
@@ -44,126 +45,34 @@ CANTILEVER_SAFETY = (0.9, 0.5)
 CANTILEVER_END = 0.1  # s
 
 
+def verification_deck(case, elements, safety, end_time=None):
+    """The deck of inputs/verification/<case> with Box Elements `elements`, the automatic step
+    at `safety`, End time `end_time` (if given) and no Exodus output."""
+    with open(os.path.join(ROOT, "inputs", "verification", case, "deck.xml")) as deck:
+        text = deck.read()
+    text = re.sub(r'(name="Elements" type="Array\(int\)" value=)"\{[^}]*\}"',
+                  lambda m: m.group(1) + '"{%d, %d, %d}"' % elements, text, count=1)
+    end = re.search(r'<Parameter name="End time" type="double" value="([^"]*)"/>', text)
+    text = (text[:end.start()] +
+            f'<Parameter name="End time" type="double" value="{end_time or end.group(1)}"/>\n'
+            f'      <Parameter name="Safety factor" type="double" value="{safety:g}"/>' +
+            text[end.end():])
+    if '<Parameter name="Exodus" type="bool" value="false"/>' not in text:
+        text = text.replace('  <ParameterList name="Materials">',
+                            '  <ParameterList name="Output">\n'
+                            '    <Parameter name="Exodus" type="bool" value="false"/>\n'
+                            '  </ParameterList>\n  <ParameterList name="Materials">', 1)
+    return text
+
+
 def bar_deck(along, safety):
-    """The explicit_bar_wave deck with `along` elements along the bar and the given safety
-    factor (automatic step)."""
-    return f"""<ParameterList name="railfe">
-  <Parameter name="Title" type="string" value="bar wave, {along} elements, safety {safety}"/>
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="box"/>
-    <ParameterList name="Box">
-      <Parameter name="Lengths" type="Array(double)" value="{{1.0, 0.01, 0.01}}"/>
-      <Parameter name="Elements" type="Array(int)" value="{{{along}, 2, 2}}"/>
-      <Parameter name="Block name" type="string" value="bar"/>
-    </ParameterList>
-    <ParameterList name="Node sets">
-      <ParameterList name="quarter"><Parameter name="Box" type="Array(double)" value="{{0.249, 0.251, -1, 1, -1, 1}}"/></ParameterList>
-      <ParameterList name="three_quarters"><Parameter name="Box" type="Array(double)" value="{{0.749, 0.751, -1, 1, -1, 1}}"/></ParameterList>
-    </ParameterList>
-  </ParameterList>
-{steel_materials_xml(["bar"])}  <ParameterList name="Output">
-    <Parameter name="Exodus" type="bool" value="false"/>
-  </ParameterList>
-  <ParameterList name="Steps">
-    <ParameterList name="bar">
-      <Parameter name="Module" type="string" value="explicit"/>
-      <Parameter name="End time" type="double" value="170e-6"/>
-      <Parameter name="Safety factor" type="double" value="{safety:g}"/>
-      <ParameterList name="Solid">
-        <Parameter name="Bulk viscosity linear" type="double" value="0"/>
-        <Parameter name="Bulk viscosity quadratic" type="double" value="0"/>
-      </ParameterList>
-      <ParameterList name="Prescribed motion">
-        <ParameterList name="pushed end">
-          <Parameter name="Node set" type="string" value="xmin"/>
-          <Parameter name="Components" type="string" value="x"/>
-          <Parameter name="Function" type="string" value="0.1"/>
-        </ParameterList>
-      </ParameterList>
-      <ParameterList name="Output">
-        <Parameter name="Energy interval" type="int" value="50"/>
-        <ParameterList name="Histories">
-          <ParameterList name="quarter">
-            <Parameter name="Node set" type="string" value="quarter"/>
-            <Parameter name="Quantity" type="string" value="velocity"/>
-            <Parameter name="Arrival level" type="double" value="0.05"/>
-          </ParameterList>
-          <ParameterList name="three_quarters">
-            <Parameter name="Node set" type="string" value="three_quarters"/>
-            <Parameter name="Quantity" type="string" value="velocity"/>
-            <Parameter name="Arrival level" type="double" value="0.05"/>
-          </ParameterList>
-        </ParameterList>
-        <ParameterList name="Wave speeds">
-          <ParameterList name="bar speed">
-            <Parameter name="From" type="string" value="quarter"/>
-            <Parameter name="To" type="string" value="three_quarters"/>
-          </ParameterList>
-        </ParameterList>
-      </ParameterList>
-    </ParameterList>
-  </ParameterList>
-</ParameterList>
-"""
+    """The explicit_bar_wave deck with `along` elements along the bar (2 x 2 across)."""
+    return verification_deck("explicit_bar_wave", (along, 2, 2), safety)
 
 
 def cantilever_deck(along, across, safety, end_time):
     """The explicit_cantilever deck on an along x across x across mesh."""
-    return f"""<ParameterList name="railfe">
-  <Parameter name="Title" type="string" value="cantilever swing {along}x{across}x{across}"/>
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="box"/>
-    <ParameterList name="Box">
-      <Parameter name="Lengths" type="Array(double)" value="{{1.0, 0.05, 0.05}}"/>
-      <Parameter name="Elements" type="Array(int)" value="{{{along}, {across}, {across}}}"/>
-      <Parameter name="Block name" type="string" value="beam"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Output">
-    <Parameter name="Exodus" type="bool" value="false"/>
-  </ParameterList>
-{steel_materials_xml(["beam"])}  <ParameterList name="Steps">
-    <ParameterList name="bend">
-      <Parameter name="Module" type="string" value="statics"/>
-      <ParameterList name="Displacements">
-        <ParameterList name="clamp"><Parameter name="Node set" type="string" value="xmin"/></ParameterList>
-      </ParameterList>
-      <ParameterList name="Nodal forces">
-        <ParameterList name="tip">
-          <Parameter name="Node set" type="string" value="xmax"/>
-          <Parameter name="Total force" type="Array(double)" value="{{0, 0, 500}}"/>
-        </ParameterList>
-      </ParameterList>
-    </ParameterList>
-    <ParameterList name="swing">
-      <Parameter name="Module" type="string" value="explicit"/>
-      <Parameter name="Start from" type="string" value="bend"/>
-      <Parameter name="End time" type="double" value="{end_time:g}"/>
-      <Parameter name="Safety factor" type="double" value="{safety:g}"/>
-      <ParameterList name="Solid">
-        <Parameter name="Bulk viscosity linear" type="double" value="0"/>
-        <Parameter name="Bulk viscosity quadratic" type="double" value="0"/>
-      </ParameterList>
-      <ParameterList name="Prescribed motion">
-        <ParameterList name="clamp">
-          <Parameter name="Node set" type="string" value="xmin"/>
-          <Parameter name="Kind" type="string" value="displacement"/>
-        </ParameterList>
-      </ParameterList>
-      <ParameterList name="Output">
-        <Parameter name="Energy interval" type="int" value="500"/>
-        <Parameter name="History interval" type="int" value="100"/>
-        <ParameterList name="Histories">
-          <ParameterList name="tip">
-            <Parameter name="Node set" type="string" value="xmax"/>
-            <Parameter name="Component" type="string" value="z"/>
-          </ParameterList>
-        </ParameterList>
-      </ParameterList>
-    </ParameterList>
-  </ParameterList>
-</ParameterList>
-"""
+    return verification_deck("explicit_cantilever", (along, across, across), safety, end_time)
 
 
 def cost(run):
