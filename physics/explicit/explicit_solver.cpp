@@ -132,18 +132,21 @@ void ExplicitSolver::calibrate_stable_step() {
   elastic.bulk_linear = elastic.bulk_quadratic = 0;
   if (elastic.hourglass == HourglassForm::viscous)
     elastic.hourglass = HourglassForm::none;
-  // Without velocity-dependent forces the kernel ignores v_; force_ and a_ are free until the
-  // first force evaluation and serve as buffers, so the estimate adds one array, not four.
+  // Without velocity-dependent forces the kernel ignores v_. Until the first force evaluation
+  // a_ and force_ (local) and residual_, applied_ and external_ (owned) hold nothing, so the
+  // estimate borrows them and the run's peak memory stays that of its steps.
   std::vector<double>& force = force_;
   std::vector<double>& trial = a_;
-  std::vector<double> base_force(u_.size(), 0.0);
-  add_internal_forces(elements_, elastic, x_.data(), u_.data(), v_.data(), base_force.data());
-  ghosts_->sum_into_owners(base_force.data());
+  std::vector<double>& base_force = residual_;
+  std::fill(force.begin(), force.end(), 0.0);
+  add_internal_forces(elements_, elastic, x_.data(), u_.data(), v_.data(), force.data());
+  ghosts_->sum_into_owners(force.data());
+  std::copy_n(force.begin(), n_owned_dofs_, base_force.begin());
   double shortest = 1e300;
   for (double length : elements_.length)
     shortest = std::min(shortest, length);
   shortest = comm_.min(shortest);
-  auto apply = [&](const double* q, double* w) {
+  auto add_product = [&](const double* q, double* w) {
     double largest = 0;
     for (std::size_t k = 0; k < n_owned_dofs_; ++k)
       largest = std::max(largest, std::abs(q[k]) / std::sqrt(mass_[k / 3]));
@@ -157,12 +160,15 @@ void ExplicitSolver::calibrate_stable_step() {
     add_internal_forces(elements_, elastic, x_.data(), trial.data(), v_.data(), force.data());
     ghosts_->sum_into_owners(force.data());
     for (std::size_t k = 0; k < n_owned_dofs_; ++k)
-      w[k] = (force[k] - base_force[k]) / scale / std::sqrt(mass_[k / 3]);
+      w[k] += (force[k] - base_force[k]) / scale / std::sqrt(mass_[k / 3]);
   };
-  std::vector<GlobalIndex> seeds(n_owned_dofs_);
-  for (std::size_t k = 0; k < n_owned_dofs_; ++k)
-    seeds[k] = 3 * dofs_.partition().global_node(static_cast<LocalIndex>(k / 3)) + k % 3;
-  const double lambda = largest_eigenvalue(apply, seeds, comm_);
+  const MeshPartition& partition = dofs_.partition();
+  auto global_dof = [&partition](std::size_t k) {
+    return 3 * partition.global_node(static_cast<LocalIndex>(k / 3)) +
+           static_cast<GlobalIndex>(k % 3);
+  };
+  const double lambda = largest_eigenvalue(add_product, n_owned_dofs_, global_dof, applied_.data(),
+                                           external_.data(), comm_);
   double element_step = 1e300;
   for (double step : elements_.stable_step)
     element_step = std::min(element_step, step);
@@ -192,7 +198,8 @@ void ExplicitSolver::initialise(const double* start) {
   discrete_->initialise_nodes(nodes);
   ghosts_->update_ghosts(u_.data(), v_.data());
   calibrate_stable_step();
-  // The calibration used a_ as a buffer: the accelerations are set from here on.
+  // The calibration used a_ as a buffer: the accelerations are set from here on (the other
+  // borrowed arrays are overwritten by the first force evaluation).
   std::fill(a_.begin(), a_.end(), 0.0);
   motions_->apply(0, 0, u_.data(), du_.data(), v_.data(), a_.data());
   evaluate_forces(0);

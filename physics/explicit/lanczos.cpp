@@ -1,6 +1,7 @@
 #include "physics/explicit/lanczos.hpp"
 
 #include <cmath>
+#include <vector>
 
 #include <Eigen/Dense>
 
@@ -8,9 +9,9 @@ namespace railfe {
 
 namespace {
 
-double dot(const std::vector<double>& a, const std::vector<double>& b, const Communicator& comm) {
+double dot(const double* a, const double* b, std::size_t n, const Communicator& comm) {
   double sum = 0;
-  for (std::size_t i = 0; i < a.size(); ++i)
+  for (std::size_t i = 0; i < n; ++i)
     sum += a[i] * b[i];
   return comm.sum(sum);
 }
@@ -26,28 +27,30 @@ double hashed(GlobalIndex seed) {
 
 }  // namespace
 
-double largest_eigenvalue(const std::function<void(const double*, double*)>& apply,
-                          const std::vector<GlobalIndex>& seeds, const Communicator& comm,
-                          double tolerance, int max_iterations) {
-  const std::size_t n = seeds.size();
-  std::vector<double> q(n), previous(n, 0.0), w(n);
+double largest_eigenvalue(const std::function<void(const double*, double*)>& add_product,
+                          std::size_t n,
+                          const std::function<GlobalIndex(std::size_t)>& global_index, double* q,
+                          double* p, const Communicator& comm, double tolerance,
+                          int max_iterations) {
   for (std::size_t i = 0; i < n; ++i)
-    q[i] = hashed(seeds[i]);
-  double norm = std::sqrt(dot(q, q, comm));
+    q[i] = hashed(global_index(i));
+  const double norm = std::sqrt(dot(q, q, n, comm));
   if (norm == 0)
     return 0;
-  for (double& value : q)
-    value /= norm;
+  for (std::size_t i = 0; i < n; ++i) {
+    q[i] /= norm;
+    p[i] = 0;
+  }
+  // Paige's two-vector recurrence: p enters holding −β_{k−1} q_{k−1} and leaves as β_k q_{k+1}.
   std::vector<double> alpha, beta;
   double largest = 0;
   for (int k = 0; k < max_iterations; ++k) {
-    apply(q.data(), w.data());
-    const double a = dot(q, w, comm);
+    add_product(q, p);
+    const double a = dot(q, p, n, comm);
     alpha.push_back(a);
-    const double b_previous = beta.empty() ? 0.0 : beta.back();
     for (std::size_t i = 0; i < n; ++i)
-      w[i] -= a * q[i] + b_previous * previous[i];
-    const double b = std::sqrt(dot(w, w, comm));
+      p[i] -= a * q[i];
+    const double b = std::sqrt(dot(p, p, n, comm));
     // The largest eigenvalue of the tridiagonal Lanczos matrix so far.
     const int m = static_cast<int>(alpha.size());
     Eigen::MatrixXd T = Eigen::MatrixXd::Zero(m, m);
@@ -65,9 +68,11 @@ double largest_eigenvalue(const std::function<void(const double*, double*)>& app
     if (converged || b <= 1e-14 * std::abs(estimate))
       break;
     beta.push_back(b);
-    previous.swap(q);
-    for (std::size_t i = 0; i < n; ++i)
-      q[i] = w[i] / b;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double current = q[i];
+      q[i] = p[i] / b;
+      p[i] = -b * current;
+    }
   }
   return largest;
 }

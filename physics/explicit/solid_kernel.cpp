@@ -154,7 +154,8 @@ SolidElements build_solid_elements(const MeshPartition& partition, const Materia
   elements.n_points = n_points;
   elements.nodes.resize(8 * static_cast<std::size_t>(n));
   elements.gradients.resize(24 * static_cast<std::size_t>(n) * n_points);
-  elements.weights.resize(static_cast<std::size_t>(n) * n_points);
+  if (n_points > 1)
+    elements.weights.resize(static_cast<std::size_t>(n) * n_points);
   for (auto* field :
        {&elements.volume, &elements.lambda, &elements.mu, &elements.density, &elements.wave_speed,
         &elements.hourglass_scale, &elements.stable_step, &elements.length})
@@ -198,7 +199,6 @@ SolidElements build_solid_elements(const MeshPartition& partition, const Materia
     } else {
       const double volume = mean_gradients(x, gradient);
       elements.volume[e] = volume;
-      elements.weights[e] = volume;
       double* projection = &elements.hourglass_projection[12 * static_cast<std::size_t>(e)];
       hourglass_projections(x, projection);
       double gamma[32];
@@ -333,7 +333,8 @@ SolidForceTotals add_internal_forces(const SolidElements& elements,
     const double* gradient = &elements.gradients[24 * static_cast<std::size_t>(e) * n_points];
     for (int q = 0; q < n_points; ++q) {
       double jacobian = 1, div = 0;
-      const double w = elements.weights[static_cast<std::size_t>(e) * n_points + q];
+      const double w = n_points == 1 ? elements.volume[e]
+                                     : elements.weights[static_cast<std::size_t>(e) * n_points + q];
       strain += add_point_forces(gradient + 24 * q, w, ue, ve, lambda, mu, density, c, length,
                                  settings, fe, viscous_power, jacobian, div);
       volume += jacobian * w;

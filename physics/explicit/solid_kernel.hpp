@@ -43,8 +43,10 @@ struct SolidElements {
   std::vector<LocalIndex> partition_index;  ///< element's index in the partition's block order
   std::vector<GlobalIndex> global_element;  ///< element's global index in the mesh
   std::vector<double> gradients;  ///< per point: ∂N_a/∂X_i at [i × 8 + a] (24 per point)
-  std::vector<double> weights;    ///< per point: Gauss weight × det J (reference volume)
-  std::vector<double> volume;     ///< reference volume (m³)
+  /// Full integration only: per point Gauss weight × det J; a one-point element's weight is its
+  /// volume, which is not stored twice.
+  std::vector<double> weights;
+  std::vector<double> volume;  ///< reference volume (m³)
   /// h_α · X_i, [α × 3 + i] (12 per element): the hourglass vectors γ_α = h_α − Σ_i (h_α·X_i)
   /// ∇₀N̄_i are rebuilt from them in the kernel, which costs less than reading 32 numbers.
   std::vector<double> hourglass_projection;
