@@ -1,0 +1,27 @@
+#pragma once
+/// \file
+/// Equivalent conicity as EN 15302 defines it through the kinematic (Klingel) motion of a free
+/// wheelset: the lateral displacement y(x) obeys y'' + dr(y) / (2 e r0) = 0, where dr(y) is the
+/// rolling radius difference (right minus left) at shift y, e half the distance between the
+/// contact points and r0 the centred rolling radius. For an amplitude y_hat the motion has a
+/// wavelength lambda, and the equivalent conicity is the cone's that has the same wavelength:
+/// tan(gamma_e) = e r0 (2 pi / lambda)^2.
+
+#include <functional>
+
+namespace railfe {
+
+/// Klingel's wavelength of a conical wheelset: 2 pi sqrt(r0 e / gamma) (m).
+double klingel_wavelength(double r0, double e, double conicity);
+
+/// Wavelength of the kinematic motion with amplitude \p amplitude (m, the positive turning
+/// point) under the rolling radius difference \p delta_r (m as a function of m), by integrating
+/// the equation of motion over one period (fourth-order Runge-Kutta). NaN when the motion is not
+/// oscillatory (dr does not restore the wheelset).
+double kinematic_wavelength(const std::function<double(double)>& delta_r, double e, double r0,
+                            double amplitude);
+
+/// Equivalent conicity of a wavelength: e r0 (2 pi / lambda)^2.
+double equivalent_conicity(double wavelength, double e, double r0);
+
+}  // namespace railfe

@@ -1,0 +1,120 @@
+#include "contact/geometry/contact_table.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace railfe {
+
+const ContactPoint& RigidContact::active(Side side) const {
+  const auto& both = parts[static_cast<int>(side)];
+  if (both[1].valid() && (!both[0].valid() || both[1].gap < both[0].gap))
+    return both[1];
+  return both[0];
+}
+
+RigidContact solve_rigid_contact(const WheelRailGeometry& geometry, double lateral, double yaw,
+                                 const RigidContact* start) {
+  RigidContact state;
+  state.lateral = lateral;
+  if (start) {
+    state.vertical = start->vertical;
+    state.roll = start->roll;
+  }
+  WheelsetPose pose{lateral, state.vertical, state.roll, yaw};
+  std::array<std::array<std::array<double, 2>, 2>, 2> from;
+  for (int side = 0; side < 2; ++side)
+    for (int part = 0; part < 2; ++part)
+      from[side][part] = start ? std::array<double, 2>{start->parts[side][part].s_wheel,
+                                                       start->parts[side][part].s_rail}
+                               : sampled_start(geometry, static_cast<Side>(side), part == 1, pose);
+  const double r0 = geometry.wheelset().nominal_radius;
+  for (int iteration = 0; iteration < 50; ++iteration) {
+    pose = {lateral, state.vertical, state.roll, yaw};
+    double gap[2], jacobian[2][2];
+    for (int side = 0; side < 2; ++side) {
+      for (int part = 0; part < 2; ++part) {
+        ContactPoint& p = state.parts[side][part];
+        p = search_contact(geometry, static_cast<Side>(side), part == 1, pose, from[side][part][0],
+                           from[side][part][1]);
+        from[side][part] = {p.s_wheel, p.s_rail};
+      }
+      const ContactPoint& a = state.active(static_cast<Side>(side));
+      gap[side] = a.gap;
+      // Envelope theorem: the least gap moves with the wheel point at the fixed contact.
+      jacobian[side][0] = a.normal.z;
+      jacobian[side][1] = a.normal.y * -(a.rail_point.z - (state.vertical - r0)) +
+                          a.normal.z * (a.rail_point.y - lateral);
+    }
+    state.iterations = iteration;
+    if (!state.active(Side::left).valid() || !state.active(Side::right).valid())
+      break;
+    if (std::max(std::abs(gap[0]), std::abs(gap[1])) < 1e-12) {
+      state.converged = true;
+      break;
+    }
+    const double det = jacobian[0][0] * jacobian[1][1] - jacobian[0][1] * jacobian[1][0];
+    state.vertical -= (jacobian[1][1] * gap[0] - jacobian[0][1] * gap[1]) / det;
+    state.roll -= (-jacobian[1][0] * gap[0] + jacobian[0][0] * gap[1]) / det;
+  }
+  return state;
+}
+
+ContactTable::ContactTable(const WheelRailGeometry& geometry, double max_shift, int count) {
+  count = std::max(count, 2);
+  first_ = -max_shift;
+  step_ = 2 * max_shift / (count - 1);
+  rows_.resize(static_cast<std::size_t>(count));
+  const int centre = count / 2;
+  rows_[centre] = solve_rigid_contact(geometry, first_ + step_ * centre, 0, nullptr);
+  for (int i = centre + 1; i < count; ++i)
+    rows_[i] = solve_rigid_contact(geometry, first_ + step_ * i, 0, &rows_[i - 1]);
+  for (int i = centre - 1; i >= 0; --i)
+    rows_[i] = solve_rigid_contact(geometry, first_ + step_ * i, 0, &rows_[i + 1]);
+  starts_.resize(rows_.size() * 8);
+  for (std::size_t i = 0; i < rows_.size(); ++i)
+    for (int side = 0; side < 2; ++side)
+      for (int part = 0; part < 2; ++part) {
+        starts_[8 * i + 4 * side + 2 * part] = rows_[i].parts[side][part].s_wheel;
+        starts_[8 * i + 4 * side + 2 * part + 1] = rows_[i].parts[side][part].s_rail;
+      }
+}
+
+std::array<double, 2> ContactTable::start(Side side, bool flange, double lateral) const {
+  const double position =
+      std::clamp((lateral - first_) / step_, 0.0, static_cast<double>(rows_.size() - 1));
+  const std::size_t i = std::min(static_cast<std::size_t>(position), rows_.size() - 2);
+  const double w = position - static_cast<double>(i);
+  const double* a = &starts_[8 * i + 4 * static_cast<int>(side) + 2 * (flange ? 1 : 0)];
+  const double* b = a + 8;
+  return {a[0] + w * (b[0] - a[0]), a[1] + w * (b[1] - a[1])};
+}
+
+double ContactTable::rolling_radius_difference(std::size_t i) const {
+  return rows_[i].active(Side::right).rolling_radius - rows_[i].active(Side::left).rolling_radius;
+}
+
+double ContactTable::flange_contact_shift(Side side) const {
+  const bool to_right = side == Side::right;
+  const std::size_t centre = rows_.size() / 2;
+  for (std::size_t k = 0; k <= centre; ++k) {
+    const std::size_t i = to_right ? centre + k : centre - k;
+    if (i >= rows_.size())
+      break;
+    if (rows_[i].active(side).flange)
+      return rows_[i].lateral;
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+double ContactTable::half_contact_distance() const {
+  const RigidContact& c = rows_[rows_.size() / 2];
+  return (c.active(Side::right).rail_point.y - c.active(Side::left).rail_point.y) / 2;
+}
+
+double ContactTable::centred_rolling_radius() const {
+  const RigidContact& c = rows_[rows_.size() / 2];
+  return (c.active(Side::right).rolling_radius + c.active(Side::left).rolling_radius) / 2;
+}
+
+}  // namespace railfe
