@@ -12,6 +12,7 @@ struct Conditions {
   double J[2][2];           // their derivatives in (s_wheel, s_rail)
   double gap;               // normal distance along the unit rail normal
   Vec2 normal;              // unit outward rail normal
+  double rail_lateral;      // rail profile curvature, convex positive
   double relative_lateral;  // wheel + rail lateral curvature (positive: the gap is a minimum)
 };
 
@@ -33,14 +34,10 @@ Conditions evaluate(const WheelRailGeometry& geometry, Side side, const Wheelset
   const double rail_speed = std::hypot(rail.d1.y, rail.d1.z);
   c.normal = {nr.y / rail_speed, nr.z / rail_speed};
   c.gap = dot(c.normal, d);
-  const double wheel_speed = std::hypot(tw.y, tw.z);
   // Rail: convex where the curve turns into the rail; wheel: convex where its locus turns away
   // from its outward normal (down), i.e. the opposite sign in the same plane.
-  const double rail_curvature =
-      (rail.d1.y * rail.d2.z - rail.d1.z * rail.d2.y) / (rail_speed * rail_speed * rail_speed);
-  const double wheel_curvature =
-      -(tw.y * ww.z - tw.z * ww.y) / (wheel_speed * wheel_speed * wheel_speed);
-  c.relative_lateral = rail_curvature + wheel_curvature;
+  c.rail_lateral = signed_curvature(rail.d1, rail.d2);
+  c.relative_lateral = c.rail_lateral - signed_curvature(tw, ww);
   return c;
 }
 
@@ -48,15 +45,11 @@ double norm(const double v[2]) {
   return std::hypot(v[0], v[1]);
 }
 
-// Step minimising |f + J step| within radius (Levenberg-Marquardt form of the trust region).
-void trust_region_step(const Conditions& c, double radius, double step[2]) {
-  const double det = c.J[0][0] * c.J[1][1] - c.J[0][1] * c.J[1][0];
-  if (std::abs(det) > 1e-300) {
-    step[0] = -(c.J[1][1] * c.f[0] - c.J[0][1] * c.f[1]) / det;
-    step[1] = -(-c.J[1][0] * c.f[0] + c.J[0][0] * c.f[1]) / det;
-    if (norm(step) <= radius)
-      return;
-  }
+// Step minimising |f + J step| within radius (Levenberg-Marquardt form of the trust region);
+// \p step enters holding the Newton step, kept when it is finite and inside the radius.
+void trust_region_step(const Conditions& c, double radius, bool newton_finite, double step[2]) {
+  if (newton_finite && norm(step) <= radius)
+    return;
   // (J^T J + mu I) step = -J^T f, mu found by bisection in log space so |step| = radius.
   const double g[2] = {c.J[0][0] * c.f[0] + c.J[1][0] * c.f[1],
                        c.J[0][1] * c.f[0] + c.J[1][1] * c.f[1]};
@@ -129,7 +122,7 @@ ContactPoint search_contact(const WheelRailGeometry& geometry, Side side, bool f
     }
     double step[2] = {newton[0], newton[1]};
     if (settings.use_trust_region)
-      trust_region_step(c, radius, step);
+      trust_region_step(c, radius, newton_finite, step);
     else if (!newton_finite)
       break;
     double trial[2];
@@ -176,9 +169,7 @@ ContactPoint search_contact(const WheelRailGeometry& geometry, Side side, bool f
   point.contact_angle = std::atan2(towards_centre * c.normal.y, -c.normal.z);
   point.rolling_radius = locus.radius;
   point.wheel_rolling_curvature = locus.rolling_curvature;
-  const double rail_speed = std::hypot(rail.d1.y, rail.d1.z);
-  point.rail_lateral_curvature =
-      (rail.d1.y * rail.d2.z - rail.d1.z * rail.d2.y) / (rail_speed * rail_speed * rail_speed);
+  point.rail_lateral_curvature = c.rail_lateral;
   point.wheel_lateral_curvature = c.relative_lateral - point.rail_lateral_curvature;
   const bool at_bound = s[0] <= lower[0] || s[0] >= upper[0];
   const bool satisfied = converged;

@@ -179,8 +179,12 @@ class PlacedCurve final : public ProfileCurve {
 
 double signed_curvature(const ProfileCurve& curve, double s) {
   const CurveDerivatives c = curve.at(s);
-  const double speed = std::hypot(c.d1.y, c.d1.z);
-  return (c.d1.y * c.d2.z - c.d1.z * c.d2.y) / (speed * speed * speed);
+  return signed_curvature(c.d1, c.d2);
+}
+
+double signed_curvature(Vec2 d1, Vec2 d2) {
+  const double speed = std::hypot(d1.y, d1.z);
+  return (d1.y * d2.z - d1.z * d2.y) / (speed * speed * speed);
 }
 
 std::unique_ptr<ProfileCurve> spline_curve(const std::vector<Vec2>& points) {

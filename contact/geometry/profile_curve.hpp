@@ -43,6 +43,8 @@ class ProfileCurve {
 /// Signed curvature at \p s: positive where the curve turns to the left of its direction
 /// (counter-clockwise in the (y, z) plane), 1/m.
 double signed_curvature(const ProfileCurve& curve, double s);
+/// Signed curvature of a curve with first derivative \p d1 and second derivative \p d2 (1/m).
+double signed_curvature(Vec2 d1, Vec2 d2);
 
 /// Natural C2 cubic spline through \p points (at least 3, consecutive points distinct),
 /// parameterized by cumulative chord length.

@@ -23,7 +23,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "studies"))
-from railfe_runs import run_deck, steel_materials_xml, step_section  # noqa: E402
+from railfe_runs import (box_mesh_xml, output_xml, run_deck, steel_materials_xml,  # noqa: E402
+                         step_section)
 
 
 def deck(n, steps):
@@ -32,18 +33,7 @@ def deck(n, steps):
     end_time = 0.9 * stable * steps
     return f"""<ParameterList name="railfe">
   <Parameter name="Title" type="string" value="explicit benchmark"/>
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="box"/>
-    <ParameterList name="Box">
-      <Parameter name="Lengths" type="Array(double)" value="{{1, 1, 1}}"/>
-      <Parameter name="Elements" type="Array(int)" value="{{{n}, {n}, {n}}}"/>
-      <Parameter name="Block name" type="string" value="block"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Output">
-    <Parameter name="Exodus" type="bool" value="false"/>
-  </ParameterList>
-{steel_materials_xml(["block"])}  <ParameterList name="Steps">
+{box_mesh_xml((1, 1, 1), (n, n, n), "block")}{output_xml()}{steel_materials_xml(["block"])}  <ParameterList name="Steps">
     <ParameterList name="run">
       <Parameter name="Module" type="string" value="explicit"/>
       <Parameter name="End time" type="double" value="{end_time:.9g}"/>

@@ -48,7 +48,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from railfe_runs import mpi_prefix, steel_materials_xml, step_section  # noqa: E402
+from railfe_runs import (box_mesh_xml, mpi_prefix, output_xml, steel_materials_xml,  # noqa: E402
+                         step_section)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 # The requested ratios plus 0.96 and 0.97, which bracket where the runs start to diverge.
@@ -74,18 +75,7 @@ def bar_deck(time_step=None, allow=False, end_time=400e-6):
     """The explicit_bar_wave bar pushed at xmin by 0.1*(1 + y + 2*z) m/s on x, y and z."""
     return f"""<ParameterList name="railfe">
   <Parameter name="Title" type="string" value="bar, non-symmetric push"/>
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="box"/>
-    <ParameterList name="Box">
-      <Parameter name="Lengths" type="Array(double)" value="{{1.0, 0.01, 0.01}}"/>
-      <Parameter name="Elements" type="Array(int)" value="{{200, 2, 2}}"/>
-      <Parameter name="Block name" type="string" value="bar"/>
-    </ParameterList>
-  </ParameterList>
-{steel_materials_xml(["bar"])}  <ParameterList name="Output">
-    <Parameter name="Exodus" type="bool" value="false"/>
-  </ParameterList>
-  <ParameterList name="Steps">
+{box_mesh_xml((1.0, 0.01, 0.01), (200, 2, 2), "bar")}{steel_materials_xml(["bar"])}{output_xml()}  <ParameterList name="Steps">
     <ParameterList name="bar">
       <Parameter name="Module" type="string" value="explicit"/>
       <Parameter name="End time" type="double" value="{end_time:g}"/>
@@ -119,19 +109,7 @@ def cube_deck(time_step=None, allow=False, end_time=400e-6, bulk_viscosity=False
       </ParameterList>"""
     return f"""<ParameterList name="railfe">
   <Parameter name="Title" type="string" value="free spinning cube"/>
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="box"/>
-    <ParameterList name="Box">
-      <Parameter name="Origin" type="Array(double)" value="{{-0.05, -0.05, -0.05}}"/>
-      <Parameter name="Lengths" type="Array(double)" value="{{0.1, 0.1, 0.1}}"/>
-      <Parameter name="Elements" type="Array(int)" value="{{10, 10, 10}}"/>
-      <Parameter name="Block name" type="string" value="cube"/>
-    </ParameterList>
-  </ParameterList>
-{steel_materials_xml(["cube"])}  <ParameterList name="Output">
-    <Parameter name="Exodus" type="bool" value="false"/>
-  </ParameterList>
-  <ParameterList name="Steps">
+{box_mesh_xml((0.1, 0.1, 0.1), (10, 10, 10), "cube", (-0.05, -0.05, -0.05))}{steel_materials_xml(["cube"])}{output_xml()}  <ParameterList name="Steps">
     <ParameterList name="cube">
       <Parameter name="Module" type="string" value="explicit"/>
       <Parameter name="End time" type="double" value="{end_time:g}"/>

@@ -20,34 +20,53 @@ def steel_materials_xml(blocks, young=210e9, density=7850):
 """
 
 
+def xml_array(values):
+    """A Teuchos array value: {a, b, c}."""
+    return "{" + ", ".join(str(v) for v in values) + "}"
+
+
+def box_mesh_xml(lengths, elements, block=None, origin=None):
+    """The Mesh section of a generated box: `lengths` (m) and `elements` per axis, optional block
+    name and origin (m)."""
+    extra = ""
+    if origin is not None:
+        extra += f'\n      <Parameter name="Origin" type="Array(double)" value="{xml_array(origin)}"/>'
+    if block is not None:
+        extra += f'\n      <Parameter name="Block name" type="string" value="{block}"/>'
+    return f"""  <ParameterList name="Mesh">
+    <Parameter name="Type" type="string" value="box"/>
+    <ParameterList name="Box">
+      <Parameter name="Lengths" type="Array(double)" value="{xml_array(lengths)}"/>
+      <Parameter name="Elements" type="Array(int)" value="{xml_array(elements)}"/>{extra}
+    </ParameterList>
+  </ParameterList>
+"""
+
+
+def output_xml(exodus=False):
+    """The top-level Output section: Exodus on or off."""
+    return f"""  <ParameterList name="Output">
+    <Parameter name="Exodus" type="bool" value="{'true' if exodus else 'false'}"/>
+  </ParameterList>
+"""
+
+
 def box_statics_deck(lengths, elements, clamp, load_set, load, solver=None, gravity=None,
                      probe=None, exodus=False):
     """A statics deck for a steel box (E 210 GPa, nu 0.3): `clamp` fully fixed, `load` = (kind,
     values) on side set `load_set` with kind 'Total force' or 'Pressure', optional Linear solver
     parameters {name: value}, gravity vector, a probe on node set `probe`."""
-    def array(values):
-        return "{" + ", ".join(str(v) for v in values) + "}"
     solver_xml = "".join(
         f'<Parameter name="{name}" type="{"int" if isinstance(value, int) else "string"}" '
         f'value="{value}"/>' for name, value in (solver or {}).items())
-    gravity_xml = (f'<Parameter name="Gravity" type="Array(double)" value="{array(gravity)}"/>'
+    gravity_xml = (f'<Parameter name="Gravity" type="Array(double)" value="{xml_array(gravity)}"/>'
                    if gravity else "")
     probe_xml = (f'<ParameterList name="Probes"><ParameterList name="{probe}">'
                  f'<Parameter name="Node set" type="string" value="{probe}"/>'
                  f'</ParameterList></ParameterList>' if probe else "")
     kind, values = load
     return f"""<ParameterList name="railfe">
-  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="box"/>
-    <ParameterList name="Box">
-      <Parameter name="Lengths" type="Array(double)" value="{array(lengths)}"/>
-      <Parameter name="Elements" type="Array(int)" value="{array(elements)}"/>
-    </ParameterList>
-  </ParameterList>
-{steel_materials_xml(["block_1"])}  <ParameterList name="Output">
-    <Parameter name="Exodus" type="bool" value="{'true' if exodus else 'false'}"/>
-  </ParameterList>
-  <ParameterList name="Steps">
+{box_mesh_xml(lengths, elements)}{steel_materials_xml(["block_1"])}{output_xml(exodus)}  <ParameterList name="Steps">
     <ParameterList name="load">
       <Parameter name="Module" type="string" value="statics"/>
       {gravity_xml}
@@ -56,7 +75,7 @@ def box_statics_deck(lengths, elements, clamp, load_set, load, solver=None, grav
       </ParameterList>
       <ParameterList name="Surface loads">
         <ParameterList name="load"><Parameter name="Side set" type="string" value="{load_set}"/>
-          <Parameter name="{kind}" type="Array(double)" value="{array(values)}"/></ParameterList>
+          <Parameter name="{kind}" type="Array(double)" value="{xml_array(values)}"/></ParameterList>
       </ParameterList>
       {probe_xml}
       <ParameterList name="Linear solver">{solver_xml}</ParameterList>
