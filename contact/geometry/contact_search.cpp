@@ -2,72 +2,75 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace railfe {
 
 namespace {
 
-struct Conditions {
-  double f[2];              // the two contact conditions
-  double J[2][2];           // their derivatives in (s_wheel, s_rail)
-  double gap;               // normal distance along the unit rail normal
-  Vec2 normal;              // unit outward rail normal
-  double rail_lateral;      // rail profile curvature, convex positive
-  double relative_lateral;  // wheel + rail lateral curvature (positive: the gap is a minimum)
+double dot(Vec2 a, Vec2 b) {
+  return a.y * b.y + a.z * b.z;
+}
+
+/// The wheel point at one parameter, its foot on the rail, and the gap's derivatives along the
+/// wheel: the search's merit function.
+struct Evaluation {
+  double s_wheel = 0, s_rail = 0;
+  LocusPoint locus;
+  CurveDerivatives rail;
+  Vec2 normal;                  // unit outward rail normal at the foot
+  double gap = 0;               // signed distance along the normal (negative: penetration)
+  double slope = 0;             // d gap / d s_wheel: condition 2, the normal against the tangent
+  double curvature = 0;         // d2 gap / d s_wheel2 (positive: the gap is locally convex)
+  double relative_lateral = 0;  // rail + wheel profile curvature, convex positive
 };
 
-Conditions evaluate(const WheelRailGeometry& geometry, Side side, const WheelsetPose& pose,
-                    double s_wheel, double s_rail, LocusPoint& locus, CurveDerivatives& rail) {
-  locus = geometry.locus(side, s_wheel, pose);
-  rail = geometry.rail(side).at(s_rail);
-  const Vec2 d{locus.y.v - rail.p.y, locus.z.v - rail.p.z};
-  const Vec2 tw{locus.y.d, locus.z.d}, ww{locus.y.dd, locus.z.dd};
-  const Vec2 nr{rail.d1.z, -rail.d1.y}, dnr{rail.d2.z, -rail.d2.y};
-  auto dot = [](Vec2 a, Vec2 b) { return a.y * b.y + a.z * b.z; };
-  Conditions c;
-  c.f[0] = dot(rail.d1, d);
-  c.f[1] = dot(nr, tw);
-  c.J[0][0] = dot(rail.d1, tw);
-  c.J[0][1] = dot(rail.d2, d) - dot(rail.d1, rail.d1);
-  c.J[1][0] = dot(nr, ww);
-  c.J[1][1] = dot(dnr, tw);
-  const double rail_speed = std::hypot(rail.d1.y, rail.d1.z);
-  c.normal = {nr.y / rail_speed, nr.z / rail_speed};
-  c.gap = dot(c.normal, d);
+// Condition 1 alone: the foot of \p point on the rail (its tangent orthogonal to the distance),
+// by Newton on the squared distance, which is convex near a rail that curves less than the
+// distance to it.
+double rail_foot(const ProfileCurve& rail, Vec2 point, double s, CurveDerivatives& foot) {
+  const double lower = rail.begin(), upper = rail.end();
+  for (int i = 0; i < 40; ++i) {
+    foot = rail.at(s);
+    const Vec2 d{point.y - foot.p.y, point.z - foot.p.z};
+    const double f = dot(foot.d1, d);
+    // The derivative of f, kept at least half the tangent's squared length so the step always
+    // reduces the distance (a wheel point never lies near the rail's centres of curvature).
+    const double df =
+        std::min(dot(foot.d2, d) - dot(foot.d1, foot.d1), -0.5 * dot(foot.d1, foot.d1));
+    const double next = std::clamp(s - f / df, lower, upper);
+    if (std::abs(next - s) <= 1e-15 * (1 + std::abs(s)))
+      return next;
+    s = next;
+  }
+  foot = rail.at(s);
+  return s;
+}
+
+Evaluation evaluate(const WheelRailGeometry& geometry, Side side, const WheelsetPose& pose,
+                    double s_wheel, double s_rail) {
+  Evaluation e;
+  e.s_wheel = s_wheel;
+  e.locus = geometry.locus(side, s_wheel, pose);
+  const Vec2 point{e.locus.y.v, e.locus.z.v};
+  e.s_rail = rail_foot(geometry.rail(side), point, s_rail, e.rail);
+  const CurveDerivatives& r = e.rail;
+  const Vec2 d{point.y - r.p.y, point.z - r.p.z};
+  const Vec2 tw{e.locus.y.d, e.locus.z.d}, ww{e.locus.y.dd, e.locus.z.dd};
+  const double speed = std::hypot(r.d1.y, r.d1.z);
+  e.normal = {r.d1.z / speed, -r.d1.y / speed};
+  e.gap = dot(e.normal, d);
+  e.slope = dot(e.normal, tw);
+  // The foot moves with the wheel point as condition 1 demands: ds_rail/ds_wheel.
+  const double foot_rate = -dot(r.d1, tw) / (dot(r.d2, d) - dot(r.d1, r.d1));
+  const Vec2 raw_turn{r.d2.z / speed, -r.d2.y / speed};
+  const double along = dot(raw_turn, e.normal);
+  const Vec2 normal_turn{raw_turn.y - along * e.normal.y, raw_turn.z - along * e.normal.z};
+  e.curvature = dot(e.normal, ww) + dot(normal_turn, tw) * foot_rate;
   // Rail: convex where the curve turns into the rail; wheel: convex where its locus turns away
   // from its outward normal (down), i.e. the opposite sign in the same plane.
-  c.rail_lateral = signed_curvature(rail.d1, rail.d2);
-  c.relative_lateral = c.rail_lateral - signed_curvature(tw, ww);
-  return c;
-}
-
-double norm(const double v[2]) {
-  return std::hypot(v[0], v[1]);
-}
-
-// Step minimising |f + J step| within radius (Levenberg-Marquardt form of the trust region);
-// \p step enters holding the Newton step, kept when it is finite and inside the radius.
-void trust_region_step(const Conditions& c, double radius, bool newton_finite, double step[2]) {
-  if (newton_finite && norm(step) <= radius)
-    return;
-  // (J^T J + mu I) step = -J^T f, mu found by bisection in log space so |step| = radius.
-  const double g[2] = {c.J[0][0] * c.f[0] + c.J[1][0] * c.f[1],
-                       c.J[0][1] * c.f[0] + c.J[1][1] * c.f[1]};
-  const double a = c.J[0][0] * c.J[0][0] + c.J[1][0] * c.J[1][0];
-  const double b = c.J[0][0] * c.J[0][1] + c.J[1][0] * c.J[1][1];
-  const double d = c.J[0][1] * c.J[0][1] + c.J[1][1] * c.J[1][1];
-  auto solve = [&](double mu, double out[2]) {
-    const double m = (a + mu) * (d + mu) - b * b;
-    out[0] = -((d + mu) * g[0] - b * g[1]) / m;
-    out[1] = -(-b * g[0] + (a + mu) * g[1]) / m;
-  };
-  double lo = 1e-30 * (a + d) + 1e-300, hi = 1e30 * (a + d) + 1e-300;
-  for (int i = 0; i < 100 && hi / lo > 1.0001; ++i) {
-    const double mu = std::sqrt(lo * hi);
-    solve(mu, step);
-    (norm(step) > radius ? lo : hi) = mu;
-  }
-  solve(hi, step);
+  e.relative_lateral = signed_curvature(r.d1, r.d2) - signed_curvature(tw, ww);
+  return e;
 }
 
 }  // namespace
@@ -89,147 +92,112 @@ std::string status_name(SearchStatus status) {
 ContactPoint search_contact(const WheelRailGeometry& geometry, Side side, bool flange,
                             const WheelsetPose& pose, double s_wheel, double s_rail,
                             const SearchSettings& settings) {
-  const auto wheel_range = geometry.part_range(side, flange);
-  const ProfileCurve& rail_curve = geometry.rail(side);
-  const double lower[2] = {wheel_range[0], rail_curve.begin()};
-  const double upper[2] = {wheel_range[1], rail_curve.end()};
-  double s[2] = {std::clamp(s_wheel, lower[0], upper[0]), std::clamp(s_rail, lower[1], upper[1])};
-  LocusPoint locus;
-  CurveDerivatives rail;
-  Conditions c = evaluate(geometry, side, pose, s[0], s[1], locus, rail);
+  const auto range = geometry.part_range(side, flange);
+  Evaluation e = evaluate(geometry, side, pose, std::clamp(s_wheel, range[0], range[1]), s_rail);
   double radius = settings.trust_radius;
-  ContactPoint point;
-  point.flange = flange;
-  bool converged = false;
+  bool converged = false, blocked = false;
   int iteration = 0;
   while (iteration < settings.max_iterations) {
     ++iteration;
-    const double det = c.J[0][0] * c.J[1][1] - c.J[0][1] * c.J[1][0];
-    double newton[2] = {-(c.J[1][1] * c.f[0] - c.J[0][1] * c.f[1]) / det,
-                        -(-c.J[1][0] * c.f[0] + c.J[0][0] * c.f[1]) / det};
-    const bool newton_finite = std::isfinite(newton[0]) && std::isfinite(newton[1]);
-    // Converged when the full Newton correction is negligible, or the conditions hold to
-    // round-off (near-conformal contact makes J nearly singular and magnifies that round-off
-    // in the correction): take it and stop.
-    const bool residual_small = std::abs(c.f[0]) <= 0.1 * settings.tolerance &&
-                                std::abs(c.f[1]) <= settings.tolerance / 0.01;
-    if (newton_finite && (norm(newton) <= settings.tolerance || residual_small)) {
-      s[0] = std::clamp(s[0] + newton[0], lower[0], upper[0]);
-      s[1] = std::clamp(s[1] + newton[1], lower[1], upper[1]);
-      c = evaluate(geometry, side, pose, s[0], s[1], locus, rail);
+    const double newton = -e.slope / e.curvature;
+    const bool convex = e.curvature > 0;
+    // Converged when the Newton correction of a convex gap is negligible, or the slope is zero
+    // to round-off (a stationary point, perhaps not a minimum: reported as such below).
+    if ((convex && std::abs(newton) <= settings.tolerance) ||
+        std::abs(e.slope) <= 4 * std::numeric_limits<double>::epsilon()) {
+      e = evaluate(geometry, side, pose,
+                   std::clamp(e.s_wheel + (convex ? newton : 0.0), range[0], range[1]), e.s_rail);
       converged = true;
       break;
     }
-    double step[2] = {newton[0], newton[1]};
-    if (settings.use_trust_region)
-      trust_region_step(c, radius, newton_finite, step);
-    else if (!newton_finite)
-      break;
-    double trial[2];
-    for (int k = 0; k < 2; ++k)
-      trial[k] = std::clamp(s[k] + step[k], lower[k], upper[k]);
-    const double taken[2] = {trial[0] - s[0], trial[1] - s[1]};
-    LocusPoint trial_locus;
-    CurveDerivatives trial_rail;
-    const Conditions t =
-        evaluate(geometry, side, pose, trial[0], trial[1], trial_locus, trial_rail);
-    const double merit = norm(c.f), trial_merit = norm(t.f);
-    const double model[2] = {c.f[0] + c.J[0][0] * taken[0] + c.J[0][1] * taken[1],
-                             c.f[1] + c.J[1][0] * taken[0] + c.J[1][1] * taken[1]};
-    const double predicted = merit * merit - norm(model) * norm(model);
-    const double ratio = predicted > 0 ? (merit * merit - trial_merit * trial_merit) / predicted
-                                       : (trial_merit < merit ? 1.0 : -1.0);
+    double step = newton;
     if (settings.use_trust_region) {
-      if (ratio < 0.25)
-        radius = std::max(0.25 * norm(taken), 1e-15);
-      else if (ratio > 0.75)
-        radius = std::max(radius, 2 * norm(taken));
-    }
-    if (!settings.use_trust_region || ratio > 1e-4) {
-      s[0] = trial[0];
-      s[1] = trial[1];
-      c = t;
-      locus = trial_locus;
-      rail = trial_rail;
-      // Stopped by the part's end and unable to move: the least gap lies there.
-      if (norm(taken) == 0)
-        break;
-    } else if (radius <= settings.tolerance) {
+      // Where the gap is not convex the model has no minimum: go downhill to the radius.
+      if (!convex)
+        step = e.slope > 0 ? -radius : radius;
+      step = std::clamp(step, -radius, radius);
+    } else if (!std::isfinite(step)) {
       break;
     }
+    const double trial_s = std::clamp(e.s_wheel + step, range[0], range[1]);
+    const double taken = trial_s - e.s_wheel;
+    if (taken == 0) {  // held at the part's end by a gap that falls outwards
+      blocked = true;
+      break;
+    }
+    const Evaluation trial = evaluate(geometry, side, pose, trial_s, e.s_rail);
+    bool accept = true;
+    if (settings.use_trust_region) {
+      const double predicted = e.slope * taken + 0.5 * e.curvature * taken * taken;
+      const double actual = trial.gap - e.gap;
+      const double ratio = predicted < 0 ? actual / predicted : (actual < 0 ? 1.0 : -1.0);
+      if (ratio < 0.25)
+        radius = 0.25 * std::abs(taken);
+      else if (ratio > 0.75 && std::abs(taken) >= 0.99 * radius)
+        radius *= 2;
+      // Close to a convex minimum the gap's change drowns in round-off; the slope still shows
+      // the progress.
+      accept = ratio > 1e-4 ||
+               (convex && trial.curvature > 0 && std::abs(trial.slope) < 0.5 * std::abs(e.slope));
+    }
+    if (accept)
+      e = trial;
+    else if (radius <= settings.tolerance)
+      break;
   }
+  ContactPoint point;
+  point.flange = flange;
   point.iterations = iteration;
-  point.s_wheel = s[0];
-  point.s_rail = s[1];
-  point.rail_point = rail.p;
-  point.x = locus.x;
-  point.gap = c.gap;
-  point.normal = c.normal;
+  point.s_wheel = e.s_wheel;
+  point.s_rail = e.s_rail;
+  point.rail_point = e.rail.p;
+  point.x = e.locus.x;
+  point.gap = e.gap;
+  point.normal = e.normal;
   const double towards_centre = side == Side::right ? -1.0 : 1.0;
-  point.contact_angle = std::atan2(towards_centre * c.normal.y, -c.normal.z);
-  point.rolling_radius = locus.radius;
-  point.wheel_rolling_curvature = locus.rolling_curvature;
-  point.rail_lateral_curvature = c.rail_lateral;
-  point.wheel_lateral_curvature = c.relative_lateral - point.rail_lateral_curvature;
-  const bool at_bound = s[0] <= lower[0] || s[0] >= upper[0];
-  const bool satisfied = converged;
-  if (at_bound && !satisfied)
+  point.contact_angle = std::atan2(towards_centre * e.normal.y, -e.normal.z);
+  point.rolling_radius = e.locus.radius;
+  point.wheel_rolling_curvature = e.locus.rolling_curvature;
+  point.rail_lateral_curvature = signed_curvature(e.rail.d1, e.rail.d2);
+  point.wheel_lateral_curvature = e.relative_lateral - point.rail_lateral_curvature;
+  const bool at_end = e.s_wheel <= range[0] || e.s_wheel >= range[1];
+  if (blocked || (at_end && !converged))
     point.status = SearchStatus::part_boundary;
-  else if (!satisfied)
+  else if (!converged)
     point.status = SearchStatus::not_converged;
-  else if (c.relative_lateral <= 0)
+  else if (e.curvature <= 0)
     point.status = SearchStatus::not_a_minimum;
   else
     point.status = SearchStatus::converged;
   return point;
 }
 
-std::array<double, 2> sampled_start(const WheelRailGeometry& geometry, Side side, bool flange,
-                                    const WheelsetPose& pose, int samples) {
+GapSample least_gap_sample(const WheelRailGeometry& geometry, Side side, bool flange,
+                           const WheelsetPose& pose, int samples) {
   const auto range = geometry.part_range(side, flange);
   const ProfileCurve& rail = geometry.rail(side);
-  // Rail sampled once: its points in y order are what the vertical clearance is measured to.
-  const int rail_samples = 4 * samples;
-  std::vector<Vec2> rail_points(static_cast<std::size_t>(rail_samples) + 1);
-  for (int i = 0; i <= rail_samples; ++i)
-    rail_points[i] = rail.at(rail.begin() + (rail.end() - rail.begin()) * i / rail_samples).p;
-  double best[2] = {range[0], rail.begin()};
-  double best_clearance = 1e300;
-  for (int i = 0; i <= samples; ++i) {
-    const double s = range[0] + (range[1] - range[0]) * i / samples;
-    const LocusPoint p = geometry.locus(side, s, pose);
-    // The rail's uppermost surface at the wheel point's y: the clearance is measured to it.
-    // Where no rail lies below (a flange beside the gauge face), the distance to the nearest
-    // rail point stands in for it.
-    double nearest = 1e300;
-    std::size_t nearest_k = 0;
-    for (std::size_t k = 0; k < rail_points.size(); ++k) {
-      const double distance = std::hypot(p.y.v - rail_points[k].y, p.z.v - rail_points[k].z);
-      if (distance < nearest) {
-        nearest = distance;
-        nearest_k = k;
-      }
-    }
-    if (nearest < best_clearance) {
-      best_clearance = nearest;
-      best[0] = s;
-      best[1] = rail.begin() +
-                (rail.end() - rail.begin()) * static_cast<double>(nearest_k) / rail_samples;
-    }
-    for (int k = 0; k < rail_samples; ++k) {
-      const Vec2 a = rail_points[k], b = rail_points[k + 1];
-      if ((p.y.v - a.y) * (p.y.v - b.y) > 0 || a.y == b.y)
-        continue;
-      const double w = (p.y.v - a.y) / (b.y - a.y);
-      const double clearance = a.z + w * (b.z - a.z) - p.z.v;
-      if (clearance < best_clearance) {
-        best_clearance = clearance;
-        best[0] = s;
-        best[1] = rail.begin() + (rail.end() - rail.begin()) * (k + w) / rail_samples;
-      }
+  // The first wheel point's foot starts from the nearest of a few rail points; each later one
+  // from its neighbour's foot.
+  const LocusPoint first = geometry.locus(side, range[0], pose);
+  double s_rail = rail.begin(), nearest = 1e300;
+  for (int k = 0; k <= 100; ++k) {
+    const double s = rail.begin() + (rail.end() - rail.begin()) * k / 100;
+    const Vec2 p = rail.at(s).p;
+    const double distance = std::hypot(first.y.v - p.y, first.z.v - p.z);
+    if (distance < nearest) {
+      nearest = distance;
+      s_rail = s;
     }
   }
-  return {best[0], best[1]};
+  GapSample best{range[0], s_rail, 1e300};
+  for (int i = 0; i <= samples; ++i) {
+    const double s = range[0] + (range[1] - range[0]) * i / std::max(samples, 1);
+    const Evaluation e = evaluate(geometry, side, pose, s, s_rail);
+    s_rail = e.s_rail;
+    if (e.gap < best.gap)
+      best = {s, e.s_rail, e.gap};
+  }
+  return best;
 }
 
 }  // namespace railfe

@@ -65,9 +65,17 @@ ContactPoint search_contact(const WheelRailGeometry& geometry, Side side, bool f
                             const WheelsetPose& pose, double s_wheel, double s_rail,
                             const SearchSettings& settings = {});
 
-/// A start for \p search_contact found without a table: the wheel point of the part with the
-/// least vertical clearance to the rail, by sampling (\p samples points).
-std::array<double, 2> sampled_start(const WheelRailGeometry& geometry, Side side, bool flange,
-                                    const WheelsetPose& pose, int samples = 200);
+/// A sampled point of a wheel part and its gap.
+struct GapSample {
+  double s_wheel = 0;  ///< wheel profile parameter
+  double s_rail = 0;   ///< parameter of its foot on the rail
+  double gap = 0;      ///< signed distance to the rail (m)
+};
+
+/// The least gap over \p samples + 1 evenly spaced points of the tread or (\p flange) the
+/// flange of \p side in \p pose: a start for \p search_contact found without a table, and the
+/// check that a converged search found the part's lowest minimum.
+GapSample least_gap_sample(const WheelRailGeometry& geometry, Side side, bool flange,
+                           const WheelsetPose& pose, int samples = 200);
 
 }  // namespace railfe

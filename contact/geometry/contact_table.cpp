@@ -14,7 +14,7 @@ const ContactPoint& RigidContact::active(Side side) const {
 }
 
 RigidContact solve_rigid_contact(const WheelRailGeometry& geometry, double lateral, double yaw,
-                                 const RigidContact* start) {
+                                 const RigidContact* start, int check_samples) {
   RigidContact state;
   state.lateral = lateral;
   if (start) {
@@ -24,11 +24,16 @@ RigidContact solve_rigid_contact(const WheelRailGeometry& geometry, double later
   WheelsetPose pose{lateral, state.vertical, state.roll, yaw};
   std::array<std::array<std::array<double, 2>, 2>, 2> from;
   for (int side = 0; side < 2; ++side)
-    for (int part = 0; part < 2; ++part)
-      from[side][part] = start ? std::array<double, 2>{start->parts[side][part].s_wheel,
-                                                       start->parts[side][part].s_rail}
-                               : sampled_start(geometry, static_cast<Side>(side), part == 1, pose);
+    for (int part = 0; part < 2; ++part) {
+      if (start) {
+        from[side][part] = {start->parts[side][part].s_wheel, start->parts[side][part].s_rail};
+      } else {
+        const GapSample s = least_gap_sample(geometry, static_cast<Side>(side), part == 1, pose);
+        from[side][part] = {s.s_wheel, s.s_rail};
+      }
+    }
   const double r0 = geometry.wheelset().nominal_radius;
+  int restarts = 0;
   for (int iteration = 0; iteration < 50; ++iteration) {
     pose = {lateral, state.vertical, state.roll, yaw};
     double gap[2], jacobian[2][2];
@@ -50,8 +55,24 @@ RigidContact solve_rigid_contact(const WheelRailGeometry& geometry, double later
     if (!state.active(Side::left).valid() || !state.active(Side::right).valid())
       break;
     if (std::max(std::abs(gap[0]), std::abs(gap[1])) < 1e-12) {
-      state.converged = true;
-      break;
+      // A local minimum of each part is closed; where a sample of a part lies lower, the
+      // contact has jumped to another minimum (two-point contact): restart there.
+      bool jumped = false;
+      for (int side = 0; side < 2 && check_samples > 0 && restarts < 4; ++side)
+        for (int part = 0; part < 2; ++part) {
+          const GapSample s =
+              least_gap_sample(geometry, static_cast<Side>(side), part == 1, pose, check_samples);
+          if (s.gap < state.active(static_cast<Side>(side)).gap - 1e-9) {
+            from[side][part] = {s.s_wheel, s.s_rail};
+            jumped = true;
+          }
+        }
+      if (!jumped) {
+        state.converged = true;
+        break;
+      }
+      ++restarts;
+      continue;
     }
     const double det = jacobian[0][0] * jacobian[1][1] - jacobian[0][1] * jacobian[1][0];
     state.vertical -= (jacobian[1][1] * gap[0] - jacobian[0][1] * gap[1]) / det;
@@ -60,17 +81,18 @@ RigidContact solve_rigid_contact(const WheelRailGeometry& geometry, double later
   return state;
 }
 
-ContactTable::ContactTable(const WheelRailGeometry& geometry, double max_shift, int count) {
+ContactTable::ContactTable(const WheelRailGeometry& geometry, double max_shift, int count,
+                           int check_samples) {
   count = std::max(count, 2);
   first_ = -max_shift;
   step_ = 2 * max_shift / (count - 1);
   rows_.resize(static_cast<std::size_t>(count));
   const int centre = count / 2;
-  rows_[centre] = solve_rigid_contact(geometry, first_ + step_ * centre, 0, nullptr);
+  rows_[centre] = solve_rigid_contact(geometry, first_ + step_ * centre, 0, nullptr, check_samples);
   for (int i = centre + 1; i < count; ++i)
-    rows_[i] = solve_rigid_contact(geometry, first_ + step_ * i, 0, &rows_[i - 1]);
+    rows_[i] = solve_rigid_contact(geometry, first_ + step_ * i, 0, &rows_[i - 1], check_samples);
   for (int i = centre - 1; i >= 0; --i)
-    rows_[i] = solve_rigid_contact(geometry, first_ + step_ * i, 0, &rows_[i + 1]);
+    rows_[i] = solve_rigid_contact(geometry, first_ + step_ * i, 0, &rows_[i + 1], check_samples);
   starts_.resize(rows_.size() * 8);
   for (std::size_t i = 0; i < rows_.size(); ++i)
     for (int side = 0; side < 2; ++side)

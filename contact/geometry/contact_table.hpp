@@ -26,16 +26,19 @@ struct RigidContact {
 };
 
 /// Solves for the vertical position and roll that close both wheels' gaps at \p lateral and
-/// \p yaw, starting from \p start (or from a sampled start when null).
+/// \p yaw, starting from \p start (or from a sampled start when null). Once closed, each part
+/// is sampled at \p check_samples + 1 points (none when 0); where one lies lower than the
+/// contact found, the contact has jumped there and the solve goes on from it.
 RigidContact solve_rigid_contact(const WheelRailGeometry& geometry, double lateral, double yaw,
-                                 const RigidContact* start);
+                                 const RigidContact* start, int check_samples = 100);
 
 /// Rigid contact over a uniform range of lateral shifts.
 class ContactTable {
  public:
   /// Builds \p count rows for shifts from -\p max_shift to +\p max_shift (continuation from
-  /// the centre outwards).
-  ContactTable(const WheelRailGeometry& geometry, double max_shift, int count);
+  /// the centre outwards; \p check_samples as in solve_rigid_contact).
+  ContactTable(const WheelRailGeometry& geometry, double max_shift, int count,
+               int check_samples = 100);
   /// The rows in increasing shift.
   const std::vector<RigidContact>& rows() const { return rows_; }
   /// Start point (s_wheel, s_rail) for the online search of \p side's tread or flange at

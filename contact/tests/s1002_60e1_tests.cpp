@@ -1,8 +1,10 @@
 // The S1002 wheel on the 60E1 rail inclined 1:40 (the Manchester benchmark's profiles), gauge
-// 1435 mm, back-to-back 1360 mm, r0 = 460 mm: tread contact when centred. (The flange-contact
-// shift and the table-started online search are still being brought up: see issue 5.)
+// 1435 mm, back-to-back 1360 mm, r0 = 460 mm: tread contact when centred, flange contact from
+// about 6 mm, Δr continuous except where the contact point jumps, a table that leaves no
+// penetration anywhere on either wheel, and a table-started online search that agrees with it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "contact/geometry/contact_table.hpp"
@@ -43,6 +45,107 @@ TEST(S1002On60E1, CentredWheelsetTouchesOnTheTread) {
   EXPECT_NEAR(centre.active(Side::right).rolling_radius, centre.active(Side::left).rolling_radius,
               1e-9);
   EXPECT_NEAR(centre.roll, 0, 1e-12);
+}
+
+// The table at 0.01 mm steps over ±15 mm, shared by the tests below.
+const ContactTable& fine_table() {
+  static const ContactTable table(benchmark_geometry(), 0.015, 3001);
+  return table;
+}
+
+TEST(S1002On60E1, FlangeContactFromAboutSixMillimetresOnBothSides) {
+  const ContactTable& table = fine_table();
+  for (const auto& row : table.rows())
+    ASSERT_TRUE(row.converged) << "shift " << row.lateral;
+  const double right = table.flange_contact_shift(Side::right);
+  EXPECT_NEAR(right, 0.006, 0.0015);
+  EXPECT_NEAR(table.flange_contact_shift(Side::left), -right, 1e-9);
+  // Mirror symmetry of the whole table: Δr(-y) = -Δr(y).
+  const std::size_t n = table.rows().size();
+  for (std::size_t i = 0; i < n; ++i)
+    EXPECT_NEAR(table.rolling_radius_difference(i), -table.rolling_radius_difference(n - 1 - i),
+                1e-9);
+  // On the flange the contact angle is steep.
+  for (const auto& row : table.rows())
+    if (row.lateral >= right)
+      EXPECT_GT(row.active(Side::right).contact_angle, 30 * M_PI / 180);
+}
+
+TEST(S1002On60E1, RollingRadiusDifferenceJumpsOnlyWhereTheContactPointJumps) {
+  const ContactTable& table = fine_table();
+  const double flange = table.flange_contact_shift(Side::right);
+  int flange_jumps = 0;
+  for (std::size_t i = 1; i < table.rows().size(); ++i) {
+    const RigidContact &a = table.rows()[i - 1], &b = table.rows()[i];
+    double move = 0, angle_step = 0;
+    for (Side side : {Side::left, Side::right}) {
+      move = std::max(move, std::abs(b.active(side).rail_point.y - a.active(side).rail_point.y));
+      angle_step = std::max(angle_step,
+                            std::abs(b.active(side).contact_angle - a.active(side).contact_angle));
+    }
+    const double dr_step =
+        std::abs(table.rolling_radius_difference(i) - table.rolling_radius_difference(i - 1));
+    if (move < 0.002) {
+      // The contact point moved continuously over the 0.01 mm step: so did Δr and the angle.
+      EXPECT_LT(dr_step, 0.5e-3) << "shift " << b.lateral;
+      EXPECT_LT(angle_step, 5 * M_PI / 180) << "shift " << b.lateral;
+    } else if (b.lateral == flange) {
+      // Onto the flange: Δr and the contact angle jump.
+      ++flange_jumps;
+      EXPECT_GT(dr_step, 4e-3);
+      EXPECT_GT(angle_step, 25 * M_PI / 180);
+    }
+  }
+  EXPECT_EQ(flange_jumps, 1);
+}
+
+TEST(S1002On60E1, TableLeavesNoPenetrationAnywhereOnEitherWheel) {
+  // The table tracks local minima and samples each part 100 times for lower ones; a 40 times
+  // denser scan must find nothing the table missed.
+  const ContactTable table(benchmark_geometry(), 0.015, 121);
+  for (const auto& row : table.rows()) {
+    const WheelsetPose pose{row.lateral, row.vertical, row.roll, 0};
+    for (Side side : {Side::left, Side::right})
+      for (bool flange : {false, true}) {
+        const GapSample least = least_gap_sample(benchmark_geometry(), side, flange, pose, 4000);
+        EXPECT_GT(least.gap, -1e-8) << "shift " << row.lateral;
+      }
+  }
+}
+
+TEST(S1002On60E1, TableStartedSearchAgreesAndConvergesInAFewIterations) {
+  // Start from a coarse table (0.25 mm steps) at the shifts of the fine one, half-way between
+  // the coarse rows, in the fine table's rigid pose: the search must find the fine table's
+  // contact, or say it did not.
+  const ContactTable coarse(benchmark_geometry(), 0.015, 121);
+  const ContactTable& fine = fine_table();
+  int searches = 0, agreed = 0, refused = 0, most_iterations = 0;
+  for (std::size_t i = 0; i < fine.rows().size(); i += 25) {
+    const RigidContact& row = fine.rows()[i];
+    const WheelsetPose pose{row.lateral, row.vertical, row.roll, 0};
+    for (Side side : {Side::left, Side::right}) {
+      const ContactPoint& expected = row.active(side);
+      const auto start = coarse.start(side, expected.flange, row.lateral);
+      const ContactPoint found =
+          search_contact(benchmark_geometry(), side, expected.flange, pose, start[0], start[1]);
+      ++searches;
+      if (!found.valid()) {
+        ++refused;
+        continue;
+      }
+      most_iterations = std::max(most_iterations, found.iterations);
+      // A valid point is a true gap minimum: the expected one, or (near a jump, where the start
+      // lies in the other basin) one with a gap no lower than it.
+      if (std::abs(found.rail_point.y - expected.rail_point.y) < 1e-6) {
+        ++agreed;
+        EXPECT_NEAR(found.gap, 0, 1e-9);
+      } else {
+        EXPECT_GT(found.gap, -1e-9) << "shift " << row.lateral;
+      }
+    }
+  }
+  EXPECT_LE(most_iterations, 8);
+  EXPECT_GE(agreed, searches - 8) << refused << " refused";
 }
 
 }  // namespace
