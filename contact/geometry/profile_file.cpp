@@ -1,13 +1,13 @@
 #include "contact/geometry/profile_file.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <optional>
 #include <sstream>
 
+#include "contact/geometry/profile_formats.hpp"
 #include "framework/base/error.hpp"
 
 namespace railfe {
@@ -31,15 +31,6 @@ std::string strip(const std::string& line) {
     return "";
   const std::size_t last = line.find_last_not_of(" \t\r", end - 1);
   return line.substr(first, last - first + 1);
-}
-
-std::optional<double> number(const std::string& token) {
-  char* end = nullptr;
-  errno = 0;
-  const double value = std::strtod(token.c_str(), &end);
-  if (token.empty() || *end != '\0' || errno != 0 || !std::isfinite(value))
-    return std::nullopt;
-  return value;
 }
 
 class ProfileParser {
@@ -66,8 +57,6 @@ class ProfileParser {
       point[0] /= *unit_factor_;
       point[1] /= *unit_factor_;
     }
-    if (file_.points.size() > 1 && file_.points[1][0] < file_.points[0][0])
-      std::reverse(file_.points.begin(), file_.points.end());
     return file_;
   }
 
@@ -92,12 +81,12 @@ class ProfileParser {
 
   void read_setting(const std::string& key, const std::string& value) {
     if (block_ == "header" && key == "type") {
-      const auto type = number(value);
+      const auto type = profile_number(value);
       if (!type || (*type != 0 && *type != 1))
         fail("type = " + value + " is not a profile type", "0 (rail) or 1 (wheel)");
       type_ = static_cast<int>(*type);
     } else if (block_ == "spline" && key == "units.len.f") {
-      const auto factor = number(value);
+      const auto factor = profile_number(value);
       if (!factor || *factor <= 0)
         fail("units.len.f = " + value + " is not a unit factor", "a positive number");
       unit_factor_ = *factor;
@@ -113,30 +102,15 @@ class ProfileParser {
     std::vector<double> values;
     std::string token;
     while (fields >> token) {
-      const auto value = number(token);
+      const auto value = profile_number(token);
       if (!value)
         fail("'" + token + "' in the point list is not a number");
       values.push_back(*value);
     }
     if (values.size() < 2 || values.size() > 3)
       fail("a profile point needs y and z (and optionally a weight)", "y z [weight]");
-    const auto& points = file_.points;
-    if (!points.empty()) {
-      const double step = values[0] - points.back()[0];
-      if (step == 0)
-        fail("y = " + token_of(values[0]) + " is listed twice", "strictly monotonic y");
-      if (points.size() > 1 && (step > 0) != (points.back()[0] > points[points.size() - 2][0])) {
-        fail("y = " + token_of(values[0]) + " breaks the order of the points before it",
-             "strictly increasing or strictly decreasing y");
-      }
-    }
     file_.points.push_back({values[0], values[1]});
-  }
-
-  static std::string token_of(double value) {
-    std::ostringstream text;
-    text << value;
-    return text.str();
+    file_.lines.push_back(line_number_);
   }
 
   [[noreturn]] void fail(const std::string& problem, const std::string& allowed = "") const {
@@ -155,13 +129,50 @@ class ProfileParser {
   std::optional<double> unit_factor_;
 };
 
+// A wheel's highest point (the flange tip) on +y; a rail's lowest z (its top) inside, not at
+// an end: what a mirrored or upside-down file gets wrong.
+void check_orientation(const ProfileFile& file) {
+  const auto& p = file.points;
+  if (file.type == ProfileType::wheel) {
+    const auto tip =
+        std::max_element(p.begin(), p.end(), [](auto& a, auto& b) { return a[1] < b[1]; });
+    if ((*tip)[0] <= 0)
+      throw_input_error(file.source, "", "the wheel's flange (its highest point) lies at y <= 0",
+                        "y from the running point towards the flange, z radially outwards");
+  } else if (file.type == ProfileType::rail) {
+    const auto top =
+        std::min_element(p.begin(), p.end(), [](auto& a, auto& b) { return a[1] < b[1]; });
+    if (top == p.begin() || top == p.end() - 1)
+      throw_input_error(file.source, "",
+                        "the rail's top (its least z) lies at an end of the profile",
+                        "z downwards, the head's top inside the profile");
+  }
+}
+
 }  // namespace
 
-ProfileFile read_profile_file(const std::string& path) {
+ProfileFile read_profile_file(const std::string& path, const ProfileCheckSettings& checks) {
   std::ifstream in(path);
   if (!in)
     throw_input_error(path, "", "profile file not found or not readable");
-  return ProfileParser(path).parse(in);
+  const std::string extension = std::filesystem::path(path).extension().string();
+  ProfileFile file;
+  if (extension == ".prr" || extension == ".prw")
+    file = ProfileParser(path).parse(in);
+  else if (extension == ".ban" || extension == ".whl")
+    file = read_miniprof(in, path, extension == ".whl" ? ProfileType::wheel : ProfileType::rail);
+  else if (extension == ".txt" || extension == ".dat" || extension == ".csv")
+    file = read_two_columns(in, path);
+  else
+    throw_input_error(path, "", "unknown profile format '" + extension + "'",
+                      "SIMPACK .prr/.prw, MiniProf .ban/.whl, two-column .txt/.dat/.csv");
+  check_profile(file.points, file.lines, path, checks);
+  if (file.points[1][0] < file.points[0][0]) {
+    std::reverse(file.points.begin(), file.points.end());
+    std::reverse(file.lines.begin(), file.lines.end());
+  }
+  check_orientation(file);
+  return file;
 }
 
 std::string shipped_profile(const std::string& file_name) {

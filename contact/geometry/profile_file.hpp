@@ -1,19 +1,29 @@
 #pragma once
 /// \file
-/// Wheel and rail profiles as SIMPACK writes them (.prw wheel, .prr rail): a header with the
-/// profile type, a spline block with the length unit, and the point list between point.begin
-/// and point.end, one "y z [weight]" per line. Lines or line ends after '!' or '%' are comments.
+/// Wheel and rail profile files, told apart by their extension:
+/// - SIMPACK (.prw wheel, .prr rail): a header with the profile type, a spline block with the
+///   length unit, and the point list between point.begin and point.end, one "y z [weight]" per
+///   line. Lines or line ends after '!' or '%' are comments.
+/// - MiniProf (.whl wheel, .ban rail): "Key=Value" header lines (ColumnDef must start X,Y;
+///   XYPoints, when given, must match), then "X Y" lines in mm, a leading '"' allowed. y = -X,
+///   z = Y (checked on the Manchester benchmark's rail, which ships in both formats).
+/// - Two-column text (.txt, .dat, .csv): "y z" in mm in SIMPACK's axes, separated by blanks,
+///   commas or semicolons; '#' starts a comment. The type is the caller's to say.
+/// Every list then passes check_profile (profile_checks.hpp).
 
 #include <array>
 #include <string>
 #include <vector>
 
+#include "contact/geometry/profile_checks.hpp"
+
 namespace railfe {
 
 /// What a profile describes.
 enum class ProfileType {
-  rail,  ///< header type 0
-  wheel  ///< header type 1
+  rail,        ///< SIMPACK header type 0, MiniProf .ban
+  wheel,       ///< SIMPACK header type 1, MiniProf .whl
+  unspecified  ///< two-column text
 };
 
 /// A profile as read from a file.
@@ -25,14 +35,15 @@ struct ProfileFile {
   /// Manchester benchmark's S1002 wheel, y is lateral from the running point (the flange on +y,
   /// its back face near y = 70 mm) and z grows radially outwards (the flange tip at z = 28 mm).
   std::vector<std::array<double, 2>> points;
+  std::vector<int> lines;  ///< each point's line in the file
 };
 
-/// Reads a SIMPACK profile. Lengths are divided by the file's units.len.f (1000 for mm). The
-/// spline block's processing settings (shift, rotate, bound, mirror, inversion, smoothing) are
-/// not applied; the points are taken as listed and returned in increasing y. Throws InputError
-/// naming the file (and line) when it is missing or unreadable, has no type or length unit, lists
-/// no points, or lists them out of order or twice (y must be strictly monotonic).
-ProfileFile read_profile_file(const std::string& path);
+/// Reads a profile file of any of the formats above (lengths in metres, points in increasing
+/// y) and checks it with \p checks. The SIMPACK spline block's processing settings (shift,
+/// rotate, bound, mirror, inversion, smoothing) are not applied. A wheel's flange (its highest
+/// point) must lie on +y and a rail's top must be its lowest z. Throws InputError naming the
+/// file (and line) when it is missing, unreadable or fails a check.
+ProfileFile read_profile_file(const std::string& path, const ProfileCheckSettings& checks = {});
 
 /// Path of a profile file shipped with railfe in inputs/profiles (e.g. "MBench_S1002_v3.prw").
 std::string shipped_profile(const std::string& file_name);

@@ -1,5 +1,6 @@
-// SIMPACK profile files: the shipped S1002 wheel (units, order, the benchmark's coordinates) and
-// the files the reader must refuse.
+// Profile files: the shipped S1002 wheel (units, order, the benchmark's coordinates), the
+// benchmark's rail read from its SIMPACK and its MiniProf file alike, two-column text, and the
+// files and point lists the readers and checks must refuse or smooth.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -33,51 +34,131 @@ TEST(ProfileFile, ReadsTheS1002Wheel) {
   EXPECT_NEAR(tip, 0.028, 1e-6);
 }
 
-TEST(ProfileFile, RefusesWhatItCannotUse) {
-  const auto dir = fs::temp_directory_path() / "railfe_profile_tests";
-  fs::create_directories(dir);
-  const std::string header =
-      "header.begin\n  type = 0  ! rail\nheader.end\nspline.begin\n  units.len.f = 1000.\n";
-  auto write = [&](const std::string& name, const std::string& text) {
-    std::ofstream(dir / name) << text;
-    return (dir / name).string();
-  };
-  auto message = input_error_of([&] { read_profile_file((dir / "missing.prr").string()); });
+TEST(ProfileFile, MiniProfAndSimpackFilesOfTheBenchmarkRailAgree) {
+  const ProfileFile simpack = read_profile_file(shipped_profile("MBench_UIC60_v3.prr"));
+  const ProfileFile miniprof = read_profile_file(shipped_profile("MBench_UIC60_v3.ban"));
+  EXPECT_EQ(miniprof.type, ProfileType::rail);
+  ASSERT_EQ(miniprof.points.size(), simpack.points.size());
+  for (std::size_t i = 0; i < simpack.points.size(); ++i) {
+    ASSERT_NEAR(miniprof.points[i][0], simpack.points[i][0], 1e-12) << i;
+    ASSERT_NEAR(miniprof.points[i][1], simpack.points[i][1], 1e-12) << i;
+  }
+}
+
+// Writes profile files into a scratch folder.
+class ProfileFiles : public ::testing::Test {
+ protected:
+  void SetUp() override { fs::create_directories(dir_); }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+    return (dir_ / name).string();
+  }
+  // A SIMPACK rail listing \p points ("y z" lines).
+  std::string rail(const std::string& name, const std::string& points) {
+    return write(name,
+                 "header.begin\n  type = 0  ! rail\nheader.end\nspline.begin\n"
+                 "  units.len.f = 1000.\npoint.begin\n" +
+                     points + "point.end\nspline.end\n");
+  }
+  std::string refusal(const std::string& path, const ProfileCheckSettings& checks = {}) {
+    return input_error_of([&] { read_profile_file(path, checks); });
+  }
+  fs::path dir_ = fs::temp_directory_path() / "railfe_profile_tests";
+};
+
+// A smooth rail crown: z = y^2 / 600 (mm), y from -20 to 20 mm in 1 mm steps.
+std::string crown_points(std::function<double(int)> bump = [](int) { return 0.0; }) {
+  std::string text;
+  for (int y = -20; y <= 20; ++y)
+    text += std::to_string(y) + " " + std::to_string(y * y / 600.0 + bump(y)) + "\n";
+  return text;
+}
+
+TEST_F(ProfileFiles, ReadsCommentsInEitherOrderAndTwoColumnText) {
+  // '%' lines and '!' line ends are skipped; a decreasing list comes back increasing.
+  const ProfileFile rail_file =
+      read_profile_file(rail("ok.prr", "% 9 9\n3 0.015 ! first\n2 0\n-1 0.0015 1.0\n"));
+  EXPECT_EQ(rail_file.type, ProfileType::rail);
+  ASSERT_EQ(rail_file.points.size(), 3u);
+  EXPECT_DOUBLE_EQ(rail_file.points[0][0], -0.001);
+  EXPECT_DOUBLE_EQ(rail_file.points[0][1], 0.0015e-3);
+  EXPECT_DOUBLE_EQ(rail_file.points[2][0], 0.003);
+  EXPECT_EQ(rail_file.lines[0], 10);  // the line each point came from, for messages
+
+  const ProfileFile text =
+      read_profile_file(write("crown.csv", "# y, z (mm)\n-1, 0.1\n0;0\n1 0.1\n"));
+  EXPECT_EQ(text.type, ProfileType::unspecified);
+  ASSERT_EQ(text.points.size(), 3u);
+  EXPECT_DOUBLE_EQ(text.points[2][1], 0.1e-3);
+}
+
+TEST_F(ProfileFiles, RefusesUnreadableFiles) {
+  auto message = refusal((dir_ / "missing.prr").string());
   EXPECT_NE(message.find("not found"), std::string::npos) << message;
-
-  message = input_error_of([&] {
-    read_profile_file(write("empty.prr", header + "  point.begin\n  point.end\nspline.end\n"));
-  });
+  message = refusal(write("profile.xyz", "1 2\n"));
+  EXPECT_NE(message.find("unknown profile format '.xyz'"), std::string::npos) << message;
+  message = refusal(rail("empty.prr", ""));
   EXPECT_NE(message.find("lists no profile points"), std::string::npos) << message;
-
-  message = input_error_of([&] {
-    read_profile_file(write("twice.prr", header + "point.begin\n1 0\n2 0\n2 1\npoint.end\n"));
-  });
-  EXPECT_NE(message.find("'line 9': y = 2 is listed twice"), std::string::npos) << message;
-
-  message = input_error_of([&] {
-    read_profile_file(write("order.prr", header + "point.begin\n1 0\n2 0\n1.5 1\npoint.end\n"));
-  });
-  EXPECT_NE(message.find("breaks the order"), std::string::npos) << message;
-
-  message = input_error_of([&] {
-    read_profile_file(write("text.prr", header + "point.begin\n1 0\n2 abc\npoint.end\n"));
-  });
-  EXPECT_NE(message.find("'abc'"), std::string::npos) << message;
-
-  message = input_error_of(
-      [&] { read_profile_file(write("unit.prr", "header.begin\ntype = 1\nheader.end\n")); });
+  message = refusal(rail("text.prr", "1 0\n2 abc\n"));
+  EXPECT_NE(message.find("'line 8': 'abc'"), std::string::npos) << message;
+  message = refusal(write("unit.prr", "header.begin\ntype = 1\nheader.end\n"));
   EXPECT_NE(message.find("no length unit"), std::string::npos) << message;
+  message = refusal(write("short.ban", "ColumnDef=X,Y\nXYPoints=4\n1 0\n2 0.1\n3 0.3\n"));
+  EXPECT_NE(message.find("declares 4 points but the file lists 3"), std::string::npos) << message;
+  message = refusal(write("columns.ban", "ColumnDef=Y,X\n1 0\n"));
+  EXPECT_NE(message.find("no ColumnDef=X,Y"), std::string::npos) << message;
+  message = refusal(write("three.txt", "1 2 3\n"));
+  EXPECT_NE(message.find("'line 1': needs exactly two numbers"), std::string::npos) << message;
+}
 
-  // Comments ('%' lines, '!' line ends) are skipped; a decreasing list comes back increasing.
-  const ProfileFile rail = read_profile_file(
-      write("ok.prr", header + "point.begin\n% 9 9\n3 1 ! first\n2 0\n-1 4 1.0\npoint.end\n"));
-  EXPECT_EQ(rail.type, ProfileType::rail);
-  ASSERT_EQ(rail.points.size(), 3u);
-  EXPECT_DOUBLE_EQ(rail.points[0][0], -0.001);
-  EXPECT_DOUBLE_EQ(rail.points[0][1], 0.004);
-  EXPECT_DOUBLE_EQ(rail.points[2][0], 0.003);
-  fs::remove_all(dir);
+TEST_F(ProfileFiles, RefusesRepeatedUnsortedAndLoopingPoints) {
+  auto message = refusal(rail("twice.prr", "1 0\n2 0\n2 0\n3 0\n"));
+  EXPECT_NE(message.find("'line 9, point 3 (y = 2 mm, z = 0 mm)': repeats the point before it"),
+            std::string::npos)
+      << message;
+  message = refusal(rail("vertical.prr", "1 0\n2 0\n2 1\n3 1\n"));
+  EXPECT_NE(message.find("vertical step"), std::string::npos) << message;
+  message = refusal(rail("order.prr", "1 0\n2 0\n1.5 1\n"));
+  EXPECT_NE(message.find("'line 9, point 3 (y = 1.5 mm, z = 1 mm)': y turns back"),
+            std::string::npos)
+      << message;
+  // The list runs right, back left across itself, and on: a loop, found before the order.
+  message = refusal(rail("loop.prr", "0 0\n4 0\n4 1\n2 -1\n6 -1\n"));
+  EXPECT_NE(message.find("crosses itself (a loop)"), std::string::npos) << message;
+}
+
+TEST_F(ProfileFiles, RefusesZigZagsAndKinksUnlessSmoothed) {
+  // One point 0.3 mm off a smooth crown: turns of about +-30 degrees either side of it.
+  const std::string outlier =
+      rail("outlier.prr", crown_points([](int y) { return y == 5 ? 0.3 : 0.0; }));
+  auto message = refusal(outlier);
+  EXPECT_NE(message.find("zig-zag"), std::string::npos) << message;
+  EXPECT_NE(message.find("y = 4 mm"), std::string::npos) << message;
+  // A corner: the crown continued by a 45-degree straight.
+  std::string corner = crown_points();
+  for (int y = 21; y <= 25; ++y)
+    corner += std::to_string(y) + " " + std::to_string(400 / 600.0 + (y - 20)) + "\n";
+  message = refusal(rail("corner.prr", corner));
+  EXPECT_NE(message.find("kink"), std::string::npos) << message;
+  // Smoothing takes the outlier down below the limits and leaves the crown where it was.
+  ProfileCheckSettings smooth;
+  smooth.smoothing_passes = 8;
+  const ProfileFile smoothed = read_profile_file(outlier, smooth);
+  EXPECT_LT(smoothed.points[25][1], 0.3e-3 * 0.5);
+  EXPECT_NEAR(smoothed.points[0][1], 400 / 600.0e3, 1e-9);  // the end point is kept
+}
+
+TEST_F(ProfileFiles, RefusesMirroredWheelsAndUpsideDownRails) {
+  // A wheel whose flange (highest point) lies on -y: a file in the other convention.
+  const std::string wheel =
+      "header.begin\n  type = 1\nheader.end\nspline.begin\n  units.len.f = 1000.\n"
+      "point.begin\n-30 10\n-20 5\n-10 1\n0 0\n10 -0.5\npoint.end\n";
+  auto message = refusal(write("mirrored.prw", wheel));
+  EXPECT_NE(message.find("flange (its highest point) lies at y <= 0"), std::string::npos)
+      << message;
+  message = refusal(rail("upside_down.prr", "-10 0\n-5 -0.5\n0 -1\n5 -1.5\n"));
+  EXPECT_NE(message.find("rail's top"), std::string::npos) << message;
 }
 
 }  // namespace

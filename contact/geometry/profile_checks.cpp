@@ -1,0 +1,107 @@
+#include "contact/geometry/profile_checks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "framework/base/error.hpp"
+
+namespace railfe {
+
+namespace {
+
+using Point = std::array<double, 2>;
+
+double cross(Point o, Point a, Point b) {
+  return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+}
+
+// Whether segments ab and cd share a point (collinear ones when their extents overlap).
+bool segments_cross(Point a, Point b, Point c, Point d) {
+  const double d1 = cross(c, d, a), d2 = cross(c, d, b), d3 = cross(a, b, c), d4 = cross(a, b, d);
+  if (d1 == 0 && d2 == 0) {
+    for (int k = 0; k < 2; ++k)
+      if (std::max(std::min(a[k], b[k]), std::min(c[k], d[k])) >
+          std::min(std::max(a[k], b[k]), std::max(c[k], d[k])))
+        return false;
+    return true;
+  }
+  return d1 * d2 <= 0 && d3 * d4 <= 0;
+}
+
+// Signed turn (degrees) from segment i-1..i to segment i..i+1.
+double turn_degrees(const std::vector<Point>& p, std::size_t i) {
+  const double a = std::atan2(p[i][1] - p[i - 1][1], p[i][0] - p[i - 1][0]);
+  const double b = std::atan2(p[i + 1][1] - p[i][1], p[i + 1][0] - p[i][0]);
+  return std::remainder(b - a, 2 * M_PI) * 180 / M_PI;
+}
+
+std::string where(const std::vector<Point>& p, const std::vector<int>& lines, std::size_t i) {
+  std::ostringstream text;
+  text.precision(6);
+  if (i < lines.size() && lines[i] > 0)
+    text << "line " << lines[i] << ", ";
+  text << "point " << i + 1 << " (y = " << p[i][0] * 1e3 << " mm, z = " << p[i][1] * 1e3 << " mm)";
+  return text.str();
+}
+
+}  // namespace
+
+void check_profile(std::vector<Point>& points, const std::vector<int>& lines,
+                   const std::string& source, const ProfileCheckSettings& settings) {
+  auto fail = [&](std::size_t i, const std::string& problem, const std::string& allowed) {
+    throw_input_error(source, where(points, lines, i), problem, allowed);
+  };
+  if (points.size() < 3)
+    throw_input_error(source, "", std::to_string(points.size()) + " profile points", "at least 3");
+  for (std::size_t i = 1; i < points.size(); ++i)
+    if (std::hypot(points[i][0] - points[i - 1][0], points[i][1] - points[i - 1][1]) < 1e-9)
+      fail(i, "repeats the point before it", "distinct points (remove the duplicate)");
+  // A loop is a crossing of two segments that are not neighbours; O(n^2) is fine for the few
+  // thousand points of a measured profile.
+  for (std::size_t i = 0; i + 1 < points.size(); ++i)
+    for (std::size_t j = i + 2; j + 1 < points.size(); ++j)
+      if (segments_cross(points[i], points[i + 1], points[j], points[j + 1]))
+        fail(j, "the profile crosses itself (a loop) here and at " + where(points, lines, i),
+             "a profile that does not cross itself");
+  const bool increasing = points[1][0] > points[0][0];
+  for (std::size_t i = 1; i < points.size(); ++i)
+    if ((points[i][0] > points[i - 1][0]) != increasing)
+      fail(i,
+           points[i][0] == points[i - 1][0] ? "y equals the previous point's: a vertical step"
+                                            : "y turns back: the points are out of order",
+           std::string("y strictly ") + (increasing ? "increasing" : "decreasing") +
+               " along the list");
+  for (int pass = 0; pass < settings.smoothing_passes; ++pass) {
+    std::vector<Point> smoothed = points;
+    for (std::size_t i = 1; i + 1 < points.size(); ++i)
+      smoothed[i][1] = 0.25 * points[i - 1][1] + 0.5 * points[i][1] + 0.25 * points[i + 1][1];
+    points = std::move(smoothed);
+  }
+  const std::string hint = "or set the profile's smoothing passes to filter it";
+  for (std::size_t i = 1; i + 2 < points.size(); ++i) {
+    const double a = turn_degrees(points, i), b = turn_degrees(points, i + 1);
+    if (a * b < 0 && std::abs(a) > settings.zigzag_angle_degrees &&
+        std::abs(b) > settings.zigzag_angle_degrees) {
+      std::ostringstream problem;
+      problem.precision(3);
+      problem << "zig-zag: the profile turns " << a << " then " << b << " degrees";
+      fail(i, problem.str(),
+           "turns below " + std::to_string(static_cast<int>(settings.zigzag_angle_degrees)) +
+               " degrees (remove the outlier " + hint + ")");
+    }
+  }
+  for (std::size_t i = 1; i + 1 < points.size(); ++i) {
+    const double a = turn_degrees(points, i);
+    if (std::abs(a) > settings.kink_angle_degrees) {
+      std::ostringstream problem;
+      problem.precision(3);
+      problem << "kink: the profile turns " << a << " degrees at one point";
+      fail(i, problem.str(),
+           "turns below " + std::to_string(static_cast<int>(settings.kink_angle_degrees)) +
+               " degrees (add points along the corner " + hint + ")");
+    }
+  }
+}
+
+}  // namespace railfe
