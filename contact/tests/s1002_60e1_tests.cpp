@@ -148,5 +148,42 @@ TEST(S1002On60E1, TableStartedSearchAgreesAndConvergesInAFewIterations) {
   EXPECT_GE(agreed, searches - 8) << refused << " refused";
 }
 
+TEST(S1002On60E1, PlainNewtonFromTheCentreFailsWhereTheTableStartDoesNot) {
+  // Stability where the method fails: shifts 0 to 15 mm towards the right flange, right wheel,
+  // in the fine table's pose. Plain Newton started from the centred contact stops at the part's
+  // end on every flange contact and mostly elsewhere; the trust region started from a 0.25 mm
+  // table finds the table's contact in a few iterations, and where it lands in another basin
+  // (next to a contact jump) that is still a true gap minimum, never a penetrating point.
+  const ContactTable coarse(benchmark_geometry(), 0.015, 121);
+  const ContactTable& fine = fine_table();
+  const RigidContact& centre = fine.rows()[fine.rows().size() / 2];
+  int shifts = 0, newton_correct = 0, newton_flange = 0, table_correct = 0, most_iterations = 0;
+  for (std::size_t i = fine.rows().size() / 2; i < fine.rows().size(); i += 10, ++shifts) {
+    const RigidContact& row = fine.rows()[i];
+    const ContactPoint& expected = row.active(Side::right);
+    const WheelsetPose pose{row.lateral, row.vertical, row.roll, 0};
+    const ContactPoint& centred = centre.parts[1][expected.flange ? 1 : 0];
+    SearchSettings plain;
+    plain.use_trust_region = false;
+    const ContactPoint newton = search_contact(benchmark_geometry(), Side::right, expected.flange,
+                                               pose, centred.s_wheel, centred.s_rail, plain);
+    const bool newton_ok =
+        newton.valid() && std::abs(newton.rail_point.y - expected.rail_point.y) < 1e-9;
+    newton_correct += newton_ok;
+    newton_flange += expected.flange && newton_ok;
+    const auto start = coarse.start(Side::right, expected.flange, row.lateral);
+    const ContactPoint tabled = search_contact(benchmark_geometry(), Side::right, expected.flange,
+                                               pose, start[0], start[1]);
+    ASSERT_TRUE(tabled.valid()) << "shift " << row.lateral;
+    EXPECT_GT(tabled.gap, -1e-9) << "shift " << row.lateral;
+    table_correct += std::abs(tabled.rail_point.y - expected.rail_point.y) < 1e-9;
+    most_iterations = std::max(most_iterations, tabled.iterations);
+  }
+  EXPECT_EQ(newton_flange, 0);
+  EXPECT_LT(newton_correct, shifts / 3);
+  EXPECT_GE(table_correct, shifts - 2);
+  EXPECT_LE(most_iterations, 8);
+}
+
 }  // namespace
 }  // namespace railfe
