@@ -47,7 +47,7 @@ double rail_foot(const ProfileCurve& rail, Vec2 point, double s, CurveDerivative
   return s;
 }
 
-Evaluation evaluate(const WheelRailGeometry& geometry, Side side, const WheelsetPose& pose,
+Evaluation evaluate(const WheelRailGeometry& geometry, TrackSide side, const WheelsetPose& pose,
                     double s_wheel, double s_rail) {
   Evaluation e;
   e.s_wheel = s_wheel;
@@ -89,7 +89,7 @@ std::string status_name(SearchStatus status) {
   return "?";
 }
 
-ContactPoint search_contact(const WheelRailGeometry& geometry, Side side, bool flange,
+ContactPoint search_contact(const WheelRailGeometry& geometry, TrackSide side, bool flange,
                             const WheelsetPose& pose, double s_wheel, double s_rail,
                             const SearchSettings& settings) {
   const auto range = geometry.part_range(side, flange);
@@ -154,7 +154,7 @@ ContactPoint search_contact(const WheelRailGeometry& geometry, Side side, bool f
   point.x = e.locus.x;
   point.gap = e.gap;
   point.normal = e.normal;
-  const double towards_centre = side == Side::right ? -1.0 : 1.0;
+  const double towards_centre = side == TrackSide::right ? -1.0 : 1.0;
   point.contact_angle = std::atan2(towards_centre * e.normal.y, -e.normal.z);
   point.rolling_radius = e.locus.radius;
   point.wheel_rolling_curvature = e.locus.rolling_curvature;
@@ -172,7 +172,7 @@ ContactPoint search_contact(const WheelRailGeometry& geometry, Side side, bool f
   return point;
 }
 
-GapSample least_gap_sample(const WheelRailGeometry& geometry, Side side, bool flange,
+GapSample least_gap_sample(const WheelRailGeometry& geometry, TrackSide side, bool flange,
                            const WheelsetPose& pose, int samples) {
   const auto range = geometry.part_range(side, flange);
   const ProfileCurve& rail = geometry.rail(side);

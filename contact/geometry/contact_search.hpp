@@ -61,7 +61,7 @@ struct ContactPoint {
 
 /// Solves the contact conditions for the tread (\p flange false) or flange of the wheel of
 /// \p side in \p pose, from the start (\p s_wheel, \p s_rail).
-ContactPoint search_contact(const WheelRailGeometry& geometry, Side side, bool flange,
+ContactPoint search_contact(const WheelRailGeometry& geometry, TrackSide side, bool flange,
                             const WheelsetPose& pose, double s_wheel, double s_rail,
                             const SearchSettings& settings = {});
 
@@ -75,7 +75,7 @@ struct GapSample {
 /// The least gap over \p samples + 1 evenly spaced points of the tread or (\p flange) the
 /// flange of \p side in \p pose: a start for \p search_contact found without a table, and the
 /// check that a converged search found the part's lowest minimum.
-GapSample least_gap_sample(const WheelRailGeometry& geometry, Side side, bool flange,
+GapSample least_gap_sample(const WheelRailGeometry& geometry, TrackSide side, bool flange,
                            const WheelsetPose& pose, int samples = 200);
 
 }  // namespace railfe

@@ -6,7 +6,7 @@
 
 namespace railfe {
 
-const ContactPoint& RigidContact::active(Side side) const {
+const ContactPoint& RigidContact::active(TrackSide side) const {
   const auto& both = parts[static_cast<int>(side)];
   if (both[1].valid() && (!both[0].valid() || both[1].gap < both[0].gap))
     return both[1];
@@ -28,7 +28,8 @@ RigidContact solve_rigid_contact(const WheelRailGeometry& geometry, double later
       if (start) {
         from[side][part] = {start->parts[side][part].s_wheel, start->parts[side][part].s_rail};
       } else {
-        const GapSample s = least_gap_sample(geometry, static_cast<Side>(side), part == 1, pose);
+        const GapSample s =
+            least_gap_sample(geometry, static_cast<TrackSide>(side), part == 1, pose);
         from[side][part] = {s.s_wheel, s.s_rail};
       }
     }
@@ -40,11 +41,11 @@ RigidContact solve_rigid_contact(const WheelRailGeometry& geometry, double later
     for (int side = 0; side < 2; ++side) {
       for (int part = 0; part < 2; ++part) {
         ContactPoint& p = state.parts[side][part];
-        p = search_contact(geometry, static_cast<Side>(side), part == 1, pose, from[side][part][0],
-                           from[side][part][1]);
+        p = search_contact(geometry, static_cast<TrackSide>(side), part == 1, pose,
+                           from[side][part][0], from[side][part][1]);
         from[side][part] = {p.s_wheel, p.s_rail};
       }
-      const ContactPoint& a = state.active(static_cast<Side>(side));
+      const ContactPoint& a = state.active(static_cast<TrackSide>(side));
       gap[side] = a.gap;
       // Envelope theorem: the least gap moves with the wheel point at the fixed contact.
       jacobian[side][0] = a.normal.z;
@@ -52,7 +53,7 @@ RigidContact solve_rigid_contact(const WheelRailGeometry& geometry, double later
                           a.normal.z * (a.rail_point.y - lateral);
     }
     state.iterations = iteration;
-    if (!state.active(Side::left).valid() || !state.active(Side::right).valid())
+    if (!state.active(TrackSide::left).valid() || !state.active(TrackSide::right).valid())
       break;
     if (std::max(std::abs(gap[0]), std::abs(gap[1])) < 1e-12) {
       // A local minimum of each part is closed; where a sample of a part lies lower, the
@@ -60,9 +61,9 @@ RigidContact solve_rigid_contact(const WheelRailGeometry& geometry, double later
       bool jumped = false;
       for (int side = 0; side < 2 && check_samples > 0 && restarts < 4; ++side)
         for (int part = 0; part < 2; ++part) {
-          const GapSample s =
-              least_gap_sample(geometry, static_cast<Side>(side), part == 1, pose, check_samples);
-          if (s.gap < state.active(static_cast<Side>(side)).gap - 1e-9) {
+          const GapSample s = least_gap_sample(geometry, static_cast<TrackSide>(side), part == 1,
+                                               pose, check_samples);
+          if (s.gap < state.active(static_cast<TrackSide>(side)).gap - 1e-9) {
             from[side][part] = {s.s_wheel, s.s_rail};
             jumped = true;
           }
@@ -102,7 +103,7 @@ ContactTable::ContactTable(const WheelRailGeometry& geometry, double max_shift, 
       }
 }
 
-std::array<double, 2> ContactTable::start(Side side, bool flange, double lateral) const {
+std::array<double, 2> ContactTable::start(TrackSide side, bool flange, double lateral) const {
   const double position =
       std::clamp((lateral - first_) / step_, 0.0, static_cast<double>(rows_.size() - 1));
   const std::size_t i = std::min(static_cast<std::size_t>(position), rows_.size() - 2);
@@ -113,11 +114,12 @@ std::array<double, 2> ContactTable::start(Side side, bool flange, double lateral
 }
 
 double ContactTable::rolling_radius_difference(std::size_t i) const {
-  return rows_[i].active(Side::right).rolling_radius - rows_[i].active(Side::left).rolling_radius;
+  return rows_[i].active(TrackSide::right).rolling_radius -
+         rows_[i].active(TrackSide::left).rolling_radius;
 }
 
-double ContactTable::flange_contact_shift(Side side) const {
-  const bool to_right = side == Side::right;
+double ContactTable::flange_contact_shift(TrackSide side) const {
+  const bool to_right = side == TrackSide::right;
   const std::size_t centre = rows_.size() / 2;
   for (std::size_t k = 0; k <= centre; ++k) {
     const std::size_t i = to_right ? centre + k : centre - k;
@@ -131,12 +133,12 @@ double ContactTable::flange_contact_shift(Side side) const {
 
 double ContactTable::half_contact_distance() const {
   const RigidContact& c = rows_[rows_.size() / 2];
-  return (c.active(Side::right).rail_point.y - c.active(Side::left).rail_point.y) / 2;
+  return (c.active(TrackSide::right).rail_point.y - c.active(TrackSide::left).rail_point.y) / 2;
 }
 
 double ContactTable::centred_rolling_radius() const {
   const RigidContact& c = rows_[rows_.size() / 2];
-  return (c.active(Side::right).rolling_radius + c.active(Side::left).rolling_radius) / 2;
+  return (c.active(TrackSide::right).rolling_radius + c.active(TrackSide::left).rolling_radius) / 2;
 }
 
 }  // namespace railfe

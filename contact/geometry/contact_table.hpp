@@ -22,7 +22,7 @@ struct RigidContact {
   /// The tread [side][0] and flange [side][1] contact searches at the final position.
   std::array<std::array<ContactPoint, 2>, 2> parts;
   /// The touching part of \p side: the valid part with the smaller gap.
-  const ContactPoint& active(Side side) const;
+  const ContactPoint& active(TrackSide side) const;
 };
 
 /// Solves for the vertical position and roll that close both wheels' gaps at \p lateral and
@@ -43,12 +43,12 @@ class ContactTable {
   const std::vector<RigidContact>& rows() const { return rows_; }
   /// Start point (s_wheel, s_rail) for the online search of \p side's tread or flange at
   /// \p lateral (linear interpolation, clamped to the table's range).
-  std::array<double, 2> start(Side side, bool flange, double lateral) const;
+  std::array<double, 2> start(TrackSide side, bool flange, double lateral) const;
   /// Rolling radius difference right minus left of row \p i (m).
   double rolling_radius_difference(std::size_t i) const;
   /// The first shift towards \p side at which that wheel's flange part carries the contact;
   /// NaN when it never does within the table.
-  double flange_contact_shift(Side side) const;
+  double flange_contact_shift(TrackSide side) const;
   /// Half the lateral distance between the two contact points of the centred wheelset (m).
   double half_contact_distance() const;
   /// Rolling radius of the centred wheelset, mean of both wheels (m).

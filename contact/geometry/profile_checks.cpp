@@ -16,17 +16,21 @@ double cross(Point o, Point a, Point b) {
   return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
 }
 
-// Whether segments ab and cd share a point (collinear ones when their extents overlap).
+// Whether segments ab and cd share a point (collinear ones when their extents overlap). Cross
+// products within round-off of zero count as zero, so straight runs of points are collinear.
 bool segments_cross(Point a, Point b, Point c, Point d) {
-  const double d1 = cross(c, d, a), d2 = cross(c, d, b), d3 = cross(a, b, c), d4 = cross(a, b, d);
-  if (d1 == 0 && d2 == 0) {
+  const double scale = std::hypot(b[0] - a[0], b[1] - a[1]) * std::hypot(d[0] - c[0], d[1] - c[1]);
+  auto sign = [&](double v) { return v > 1e-12 * scale ? 1 : (v < -1e-12 * scale ? -1 : 0); };
+  const int s1 = sign(cross(c, d, a)), s2 = sign(cross(c, d, b));
+  const int s3 = sign(cross(a, b, c)), s4 = sign(cross(a, b, d));
+  if (s1 == 0 && s2 == 0) {
     for (int k = 0; k < 2; ++k)
       if (std::max(std::min(a[k], b[k]), std::min(c[k], d[k])) >
           std::min(std::max(a[k], b[k]), std::max(c[k], d[k])))
         return false;
     return true;
   }
-  return d1 * d2 <= 0 && d3 * d4 <= 0;
+  return s1 * s2 <= 0 && s3 * s4 <= 0;
 }
 
 // Signed turn (degrees) from segment i-1..i to segment i..i+1.

@@ -127,17 +127,17 @@ WheelRailGeometry::WheelRailGeometry(std::shared_ptr<const ProfileCurve> rail,
   }
 }
 
-std::array<double, 2> WheelRailGeometry::part_range(Side side, bool flange) const {
+std::array<double, 2> WheelRailGeometry::part_range(TrackSide side, bool flange) const {
   const ProfileCurve& w = wheel(side);
   const double split = flange_split(side);
   // The right wheel's flange lies towards the track centre (small eta, the start of s).
-  const bool flange_first = side == Side::right;
+  const bool flange_first = side == TrackSide::right;
   if (flange == flange_first)
     return {w.begin(), split};
   return {split, w.end()};
 }
 
-LocusPoint WheelRailGeometry::locus(Side side, double s, const WheelsetPose& pose) const {
+LocusPoint WheelRailGeometry::locus(TrackSide side, double s, const WheelsetPose& pose) const {
   // The axle after roll about x, then yaw about z.
   const double cos_roll = std::cos(pose.roll);
   const double a[3] = {-std::sin(pose.yaw) * cos_roll, std::cos(pose.yaw) * cos_roll,

@@ -38,7 +38,7 @@ struct WheelsetPose {
 };
 
 /// Side of the track.
-enum class Side { left = 0, right = 1 };
+enum class TrackSide { left = 0, right = 1 };
 
 /// One point of a wheel's contact locus: where on the wheel (profile parameter s) its surface
 /// normal lies in the track's cross-section, so it can meet a straight rail's normal there.
@@ -60,19 +60,19 @@ class WheelRailGeometry {
                     const WheelsetLayout& wheelset);
 
   /// The rail of \p side in track coordinates, y increasing along s (outward normal upwards).
-  const ProfileCurve& rail(Side side) const { return *rails_[static_cast<int>(side)]; }
+  const ProfileCurve& rail(TrackSide side) const { return *rails_[static_cast<int>(side)]; }
   /// The wheel profile of \p side in wheelset coordinates (eta along the axle to the right,
   /// rho = radius), eta increasing along s.
-  const ProfileCurve& wheel(Side side) const { return *wheels_[static_cast<int>(side)]; }
+  const ProfileCurve& wheel(TrackSide side) const { return *wheels_[static_cast<int>(side)]; }
   /// The wheel parameter that separates tread (field side) from flange: the most concave point
   /// of the flange root.
-  double flange_split(Side side) const { return split_[static_cast<int>(side)]; }
+  double flange_split(TrackSide side) const { return split_[static_cast<int>(side)]; }
   /// The wheel parameter range {first, last} of the tread or (\p flange) the flange of \p side.
-  std::array<double, 2> part_range(Side side, bool flange) const;
+  std::array<double, 2> part_range(TrackSide side, bool flange) const;
   /// The wheel parameter of the running circle (the profile's y = 0).
-  double running_point(Side side) const { return running_[static_cast<int>(side)]; }
+  double running_point(TrackSide side) const { return running_[static_cast<int>(side)]; }
   /// The contact locus of the wheel of \p side at parameter \p s for \p pose.
-  LocusPoint locus(Side side, double s, const WheelsetPose& pose) const;
+  LocusPoint locus(TrackSide side, double s, const WheelsetPose& pose) const;
   /// Track dimensions.
   const TrackLayout& track() const { return track_; }
   /// Wheelset dimensions.

@@ -42,9 +42,9 @@ TEST(ContactSearch, CylinderOnCrownTouchesAtTheTopWithTheCrownsCurvature) {
   const double crown_y = track.gauge / 2 + crown_gauge_offset(track);
   for (double roll : {0.0, 0.01}) {
     const WheelsetPose pose{0.001, -0.0005, roll, 0};
-    const GapSample start = least_gap_sample(geometry, Side::right, false, pose);
+    const GapSample start = least_gap_sample(geometry, TrackSide::right, false, pose);
     const ContactPoint c =
-        search_contact(geometry, Side::right, false, pose, start.s_wheel, start.s_rail);
+        search_contact(geometry, TrackSide::right, false, pose, start.s_wheel, start.s_rail);
     ASSERT_EQ(c.status, SearchStatus::converged) << status_name(c.status);
     // The rail normal is the wheel's axle-normal: tilted by the roll, away from the flange.
     EXPECT_NEAR(c.contact_angle, -roll, 1e-12);
@@ -72,9 +72,9 @@ TEST(ContactSearch, CircleInCircleTouchesOnTheLineOfCentres) {
   const double crown_y = track.gauge / 2 + crown_gauge_offset(track);
   const double running_y = wheelset.back_to_back / 2 + wheelset.flange_back;
   const WheelsetPose pose{0.004, -0.001, 0, 0};
-  const GapSample start = least_gap_sample(geometry, Side::right, false, pose);
+  const GapSample start = least_gap_sample(geometry, TrackSide::right, false, pose);
   const ContactPoint c =
-      search_contact(geometry, Side::right, false, pose, start.s_wheel, start.s_rail);
+      search_contact(geometry, TrackSide::right, false, pose, start.s_wheel, start.s_rail);
   ASSERT_EQ(c.status, SearchStatus::converged) << status_name(c.status);
   // In track coordinates the wheel's centre of curvature lies r0 + 0.5 below the axle, the
   // rail's 0.3 below the crown top; the rail circle sits inside the wheel circle.
@@ -103,9 +103,9 @@ TEST(ContactSearch, ConeOnCrownTouchesWhereTheSlopesMatch) {
   WheelRailGeometry geometry(crown(), std::move(wheel), track, wheelset);
   const double crown_y = track.gauge / 2 + crown_gauge_offset(track);
   const WheelsetPose pose{0.002, 0, 0, 0};
-  const GapSample start = least_gap_sample(geometry, Side::right, false, pose);
+  const GapSample start = least_gap_sample(geometry, TrackSide::right, false, pose);
   const ContactPoint c =
-      search_contact(geometry, Side::right, false, pose, start.s_wheel, start.s_rail);
+      search_contact(geometry, TrackSide::right, false, pose, start.s_wheel, start.s_rail);
   ASSERT_EQ(c.status, SearchStatus::converged) << status_name(c.status);
   const double delta = std::atan(gamma);
   EXPECT_NEAR(c.contact_angle, delta, 1e-12);

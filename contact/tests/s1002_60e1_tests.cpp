@@ -34,7 +34,7 @@ const WheelRailGeometry& benchmark_geometry() {
 TEST(S1002On60E1, CentredWheelsetTouchesOnTheTread) {
   const RigidContact centre = solve_rigid_contact(benchmark_geometry(), 0, 0, nullptr);
   ASSERT_TRUE(centre.converged);
-  for (Side side : {Side::left, Side::right}) {
+  for (TrackSide side : {TrackSide::left, TrackSide::right}) {
     const ContactPoint& c = centre.active(side);
     EXPECT_FALSE(c.flange);
     // Near the running circle: within 5 mm of r0 and a tread's contact angle (below 5 degrees).
@@ -42,8 +42,8 @@ TEST(S1002On60E1, CentredWheelsetTouchesOnTheTread) {
     EXPECT_LT(std::abs(c.contact_angle), 5 * M_PI / 180);
   }
   // Symmetric track and wheelset: equal radii, level axle.
-  EXPECT_NEAR(centre.active(Side::right).rolling_radius, centre.active(Side::left).rolling_radius,
-              1e-9);
+  EXPECT_NEAR(centre.active(TrackSide::right).rolling_radius,
+              centre.active(TrackSide::left).rolling_radius, 1e-9);
   EXPECT_NEAR(centre.roll, 0, 1e-12);
 }
 
@@ -57,9 +57,9 @@ TEST(S1002On60E1, FlangeContactFromAboutSixMillimetresOnBothSides) {
   const ContactTable& table = fine_table();
   for (const auto& row : table.rows())
     ASSERT_TRUE(row.converged) << "shift " << row.lateral;
-  const double right = table.flange_contact_shift(Side::right);
+  const double right = table.flange_contact_shift(TrackSide::right);
   EXPECT_NEAR(right, 0.006, 0.0015);
-  EXPECT_NEAR(table.flange_contact_shift(Side::left), -right, 1e-9);
+  EXPECT_NEAR(table.flange_contact_shift(TrackSide::left), -right, 1e-9);
   // Mirror symmetry of the whole table: Δr(-y) = -Δr(y).
   const std::size_t n = table.rows().size();
   for (std::size_t i = 0; i < n; ++i)
@@ -68,17 +68,17 @@ TEST(S1002On60E1, FlangeContactFromAboutSixMillimetresOnBothSides) {
   // On the flange the contact angle is steep.
   for (const auto& row : table.rows())
     if (row.lateral >= right)
-      EXPECT_GT(row.active(Side::right).contact_angle, 30 * M_PI / 180);
+      EXPECT_GT(row.active(TrackSide::right).contact_angle, 30 * M_PI / 180);
 }
 
 TEST(S1002On60E1, RollingRadiusDifferenceJumpsOnlyWhereTheContactPointJumps) {
   const ContactTable& table = fine_table();
-  const double flange = table.flange_contact_shift(Side::right);
+  const double flange = table.flange_contact_shift(TrackSide::right);
   int flange_jumps = 0;
   for (std::size_t i = 1; i < table.rows().size(); ++i) {
     const RigidContact &a = table.rows()[i - 1], &b = table.rows()[i];
     double move = 0, angle_step = 0;
-    for (Side side : {Side::left, Side::right}) {
+    for (TrackSide side : {TrackSide::left, TrackSide::right}) {
       move = std::max(move, std::abs(b.active(side).rail_point.y - a.active(side).rail_point.y));
       angle_step = std::max(angle_step,
                             std::abs(b.active(side).contact_angle - a.active(side).contact_angle));
@@ -105,7 +105,7 @@ TEST(S1002On60E1, TableLeavesNoPenetrationAnywhereOnEitherWheel) {
   const ContactTable table(benchmark_geometry(), 0.015, 121);
   for (const auto& row : table.rows()) {
     const WheelsetPose pose{row.lateral, row.vertical, row.roll, 0};
-    for (Side side : {Side::left, Side::right})
+    for (TrackSide side : {TrackSide::left, TrackSide::right})
       for (bool flange : {false, true}) {
         const GapSample least = least_gap_sample(benchmark_geometry(), side, flange, pose, 4000);
         EXPECT_GT(least.gap, -1e-8) << "shift " << row.lateral;
@@ -123,7 +123,7 @@ TEST(S1002On60E1, TableStartedSearchAgreesAndConvergesInAFewIterations) {
   for (std::size_t i = 0; i < fine.rows().size(); i += 25) {
     const RigidContact& row = fine.rows()[i];
     const WheelsetPose pose{row.lateral, row.vertical, row.roll, 0};
-    for (Side side : {Side::left, Side::right}) {
+    for (TrackSide side : {TrackSide::left, TrackSide::right}) {
       const ContactPoint& expected = row.active(side);
       const auto start = coarse.start(side, expected.flange, row.lateral);
       const ContactPoint found =
@@ -160,20 +160,21 @@ TEST(S1002On60E1, PlainNewtonFromTheCentreFailsWhereTheTableStartDoesNot) {
   int shifts = 0, newton_correct = 0, newton_flange = 0, table_correct = 0, most_iterations = 0;
   for (std::size_t i = fine.rows().size() / 2; i < fine.rows().size(); i += 10, ++shifts) {
     const RigidContact& row = fine.rows()[i];
-    const ContactPoint& expected = row.active(Side::right);
+    const ContactPoint& expected = row.active(TrackSide::right);
     const WheelsetPose pose{row.lateral, row.vertical, row.roll, 0};
     const ContactPoint& centred = centre.parts[1][expected.flange ? 1 : 0];
     SearchSettings plain;
     plain.use_trust_region = false;
-    const ContactPoint newton = search_contact(benchmark_geometry(), Side::right, expected.flange,
-                                               pose, centred.s_wheel, centred.s_rail, plain);
+    const ContactPoint newton =
+        search_contact(benchmark_geometry(), TrackSide::right, expected.flange, pose,
+                       centred.s_wheel, centred.s_rail, plain);
     const bool newton_ok =
         newton.valid() && std::abs(newton.rail_point.y - expected.rail_point.y) < 1e-9;
     newton_correct += newton_ok;
     newton_flange += expected.flange && newton_ok;
-    const auto start = coarse.start(Side::right, expected.flange, row.lateral);
-    const ContactPoint tabled = search_contact(benchmark_geometry(), Side::right, expected.flange,
-                                               pose, start[0], start[1]);
+    const auto start = coarse.start(TrackSide::right, expected.flange, row.lateral);
+    const ContactPoint tabled = search_contact(benchmark_geometry(), TrackSide::right,
+                                               expected.flange, pose, start[0], start[1]);
     ASSERT_TRUE(tabled.valid()) << "shift " << row.lateral;
     EXPECT_GT(tabled.gap, -1e-9) << "shift " << row.lateral;
     table_correct += std::abs(tabled.rail_point.y - expected.rail_point.y) < 1e-9;

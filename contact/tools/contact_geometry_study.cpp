@@ -42,17 +42,17 @@ int stability(const std::string& out) {
   csv << "shift_mm,method,start,part,status,iterations,correct,rail_y_error_mm\n";
   for (std::size_t i = fine.rows().size() / 2; i < fine.rows().size(); i += 2) {
     const RigidContact& row = fine.rows()[i];
-    const ContactPoint& expected = row.active(Side::right);
+    const ContactPoint& expected = row.active(TrackSide::right);
     const int part = expected.flange ? 1 : 0;
     const WheelsetPose pose{row.lateral, row.vertical, row.roll, 0};
     for (bool trust : {false, true})
       for (bool from_table : {false, true}) {
         SearchSettings settings;
         settings.use_trust_region = trust;
-        const auto start = from_table ? coarse.start(Side::right, expected.flange, row.lateral)
+        const auto start = from_table ? coarse.start(TrackSide::right, expected.flange, row.lateral)
                                       : std::array<double, 2>{centre.parts[1][part].s_wheel,
                                                               centre.parts[1][part].s_rail};
-        const ContactPoint found = search_contact(geometry, Side::right, expected.flange, pose,
+        const ContactPoint found = search_contact(geometry, TrackSide::right, expected.flange, pose,
                                                   start[0], start[1], settings);
         const double error = found.rail_point.y - expected.rail_point.y;
         csv << row.lateral * 1e3 << ',' << (trust ? "trust region" : "plain Newton") << ','
@@ -86,7 +86,7 @@ int benchmark(const std::string& out) {
   for (std::size_t r : rows) {
     const RigidContact& row = table.rows()[r];
     const WheelsetPose pose{row.lateral, row.vertical, row.roll, 0};
-    for (Side side : {Side::left, Side::right}) {
+    for (TrackSide side : {TrackSide::left, TrackSide::right}) {
       const bool flange = row.active(side).flange;
       const auto s = coarse.start(side, flange, row.lateral);
       const ContactPoint p = search_contact(geometry, side, flange, pose, s[0], s[1]);
@@ -102,7 +102,7 @@ int benchmark(const std::string& out) {
   double sink = 0;
   start = std::chrono::steady_clock::now();
   for (double y : shifts)
-    sink += table.start(Side::right, false, y)[0];
+    sink += table.start(TrackSide::right, false, y)[0];
   const double lookup = seconds_since(start) / shifts.size();
   std::ofstream csv(out);
   csv << "quantity,value,unit,target\n"

@@ -29,7 +29,8 @@ std::vector<Choice> module_choices(const ModuleRegistry& registry) {
 ParameterSpec framework_parameters(const ModuleRegistry& registry) {
   ParameterSpec spec("The top level of a railfe deck.");
   spec.text("Title", "", "A title for the run summary and result files.");
-  spec.sublist("Mesh", mesh_parameters(registry.mesh_generators()), "The mesh.", true);
+  spec.sublist("Mesh", mesh_parameters(registry.mesh_generators()),
+               "The mesh (needed by every step whose module works on a solid).", false);
   spec.sublist("Output", output_parameters(), "Results directory and formats.");
   for (const auto& section : registry.sections()) {
     spec.delegated_sublist(section.name, section.parameters(), section.summary, section.required);

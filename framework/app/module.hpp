@@ -73,6 +73,8 @@ struct ModuleDescriptor {
   std::function<ParameterSpec()> parameters;
   /// Builds a step from its validated parameter list.
   std::function<std::unique_ptr<AnalysisStep>(const Teuchos::ParameterList&)> create;
+  /// Whether its steps work on the mesh (a deck without a Mesh section is refused for them).
+  bool needs_mesh = true;
 };
 
 /// A top-level deck section owned by physics code shared between modules (e.g. Materials).

@@ -60,12 +60,30 @@ int run(const RunOptions& options, const ModuleRegistry& registry, const Communi
   const double read_seconds = phase.seconds();
 
   phase.restart();
-  const auto& mesh_section = deck.parameters->sublist("Mesh");
-  // Every rank builds the mesh; a failure on some ranks only (a generator's helper program, a
-  // file system) must stop them all.
+  // Geometry-only decks (contact geometry, contact patches) have no Mesh section; steps whose
+  // module needs one are refused before anything runs.
+  const bool has_mesh = deck.parameters->isSublist("Mesh");
+  auto& step_lists = deck.parameters->sublist("Steps");
+  for (auto it = step_lists.begin(); it != step_lists.end() && !has_mesh; ++it) {
+    const std::string name = step_lists.name(it);
+    const std::string module_name = step_lists.sublist(name).get<std::string>("Module");
+    if (registry.find_module(module_name)->needs_mesh)
+      throw_input_error(deck.source, "Steps/" + name,
+                        "module '" + module_name + "' works on a mesh but the deck has no Mesh",
+                        "a Mesh section");
+  }
   Mesh mesh;
-  comm.run_collectively([&] { mesh = build_mesh(mesh_section, deck, registry.mesh_generators()); });
-  const PartitionMethod method = partition_method(mesh_section);
+  PartitionMethod method = PartitionMethod::block;
+  if (has_mesh) {
+    const auto& mesh_section = deck.parameters->sublist("Mesh");
+    // Every rank builds the mesh; a failure on some ranks only (a generator's helper program, a
+    // file system) must stop them all.
+    comm.run_collectively(
+        [&] { mesh = build_mesh(mesh_section, deck, registry.mesh_generators()); });
+    method = partition_method(mesh_section);
+  } else {
+    mesh.source = "none";
+  }
   Model model(deck, std::move(mesh), comm, method);
   const double mesh_seconds = phase.seconds();
 
@@ -73,7 +91,6 @@ int run(const RunOptions& options, const ModuleRegistry& registry, const Communi
   const double progress_interval =
       model.deck().parameters->sublist("Output").get<double>("Progress interval");
   std::vector<PreparedStep> steps;
-  auto& step_lists = model.deck().parameters->sublist("Steps");
   for (auto it = step_lists.begin(); it != step_lists.end(); ++it) {
     const std::string name = step_lists.name(it);
     const auto& parameters = step_lists.sublist(name);

@@ -12,6 +12,7 @@
 #include "framework/output/csv_writer.hpp"
 #include "framework/output/exodus_writer.hpp"
 #include "framework/output/field_gather.hpp"
+#include "physics/common/chart_script.hpp"
 #include "physics/modal/modal_step.hpp"
 
 namespace railfe {
@@ -187,19 +188,9 @@ void ModalStep::export_matrices(StepContext& context, const TpetraMatrix& K,
 }
 
 void ModalStep::draw_chart(StepContext& context, const std::string& csv_path) const {
-  if (!context.model.comm().is_root())
-    return;
   const std::string png = context.output.staging_path(context.step_name + "_modes.png");
-  // Debian's interpreter has matplotlib; a python3 earlier on PATH (pyenv, venv) may not.
-  const std::string python =
-      std::ifstream("/usr/bin/python3").good() ? "/usr/bin/python3" : "python3";
-  const std::string command = python +
-                              " '" RAILFE_SOURCE_DIR "/regression/charts/mode_chart.py' '" +
-                              csv_path + "' '" + png + "' > /dev/null 2>&1";
-  if (std::system(command.c_str()) != 0) {
-    context.summary.add("Step " + context.step_name + " (modal)", "warning",
-                        "the chart was not drawn (needs python3 with matplotlib): " + command);
-  }
+  railfe::draw_chart(context, "Step " + context.step_name + " (modal)", "mode_chart.py",
+                     {csv_path, png});
 }
 
 }  // namespace railfe

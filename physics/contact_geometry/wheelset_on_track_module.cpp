@@ -1,0 +1,108 @@
+#include "physics/contact_geometry/wheelset_on_track_module.hpp"
+
+#include "physics/contact_geometry/wheelset_on_track_step.hpp"
+
+namespace railfe {
+
+namespace {
+
+ParameterSpec profile_parameters() {
+  ParameterSpec spec("Profile files and their checks.");
+  spec.text("Rail", "",
+            "Rail profile, right rail, y to the field side, z down (SIMPACK .prr, MiniProf .ban "
+            "or two-column text in mm), relative to the deck; empty = the Manchester "
+            "benchmark's 60E1 (canted 1:40).");
+  spec.text("Wheel", "",
+            "Wheel profile, y from the running point towards the flange, z radially outwards "
+            "(SIMPACK .prw, MiniProf .whl or two-column text in mm); empty = the benchmark's "
+            "S1002.");
+  spec.flag("Rail canted", true,
+            "The rail profile is already drawn at the track's inclination (as the benchmark's "
+            "is); false rotates it by Track/Inclination.");
+  spec.integer("Smoothing passes", 0,
+               "[1 2 1]/4 filter passes on z before the zig-zag and kink checks (measured "
+               "profiles).",
+               Range::at_least(0));
+  spec.real("Kink angle", 20, "One turn of the point list sharper than this is refused.", "degree",
+            Range::open(0.0, 180.0));
+  spec.real("Zig-zag angle", 10,
+            "Two opposite turns in a row both sharper than this are refused (noise).", "degree",
+            Range::open(0.0, 180.0));
+  return spec;
+}
+
+ParameterSpec track_parameters() {
+  ParameterSpec spec("Track and wheelset dimensions.");
+  spec.real("Gauge", 1.435, "Between the rails' gauge points.", "m", Range::positive());
+  spec.real("Gauge point depth", 0.014, "Depth of the gauge point below the top of rail.", "m",
+            Range::positive());
+  spec.real("Inclination", 1.0 / 40, "Rail cant, tan of the angle towards the track centre.", "",
+            Range::closed(0.0, 0.2));
+  spec.real("Back to back", 1.360, "Between the wheels' flange back faces.", "m",
+            Range::positive());
+  spec.real("Flange back", 0.070, "The wheel profile's y of the flange back face.", "m",
+            Range::positive());
+  spec.real("Nominal radius", 0.46, "Rolling radius at the wheel profile's y = 0.", "m",
+            Range::positive());
+  return spec;
+}
+
+ParameterSpec pose_parameters() {
+  ParameterSpec spec("A wheelset position relative to the centred one.");
+  spec.required_real("Lateral shift", "Wheelset centre's shift to the right.", "m",
+                     Range::closed(-0.05, 0.05));
+  spec.real("Yaw", 0, "Rotation about the vertical (the axle's right end forward).", "rad",
+            Range::closed(-0.1, 0.1));
+  spec.flag("Rigid", true,
+            "Solve the vertical position and roll so both wheels just touch; false uses Vertical "
+            "and Roll as given (gaps and penetrations are reported).");
+  spec.real("Vertical", 0, "Wheelset centre's shift down (Rigid false).", "m",
+            Range::closed(-0.05, 0.05));
+  spec.real("Roll", 0,
+            "Rotation about the track axis, positive lowers the right wheel (Rigid "
+            "false).",
+            "rad", Range::closed(-0.1, 0.1));
+  return spec;
+}
+
+ParameterSpec wheelset_on_track_parameters() {
+  ParameterSpec spec(
+      "Rigid wheel-rail contact geometry: contact points for a list of poses, the contact "
+      "table, rolling radius difference and equivalent conicity.");
+  spec.sublist("Profiles", profile_parameters(), "Profile files.");
+  spec.sublist("Track", track_parameters(), "Track and wheelset.");
+  spec.named_sublists("Poses", pose_parameters(),
+                      "Wheelset poses: each row of contacts.csv is one contact (or search) of "
+                      "one wheel in one pose.");
+  spec.real("Table half range", 0.015, "The table covers lateral shifts -range to +range.", "m",
+            Range::closed_open(1e-4, 0.05));
+  spec.real("Table resolution", 1e-4, "Step between the table's shifts.", "m",
+            Range::closed(1e-6, 1e-3));
+  spec.integer("Check samples", 100,
+               "Per row and part, sampled points that look for a lower gap minimum than the one "
+               "tracked (contact jumps); 0 = none.",
+               Range::at_least(0));
+  spec.real_array("Conicity amplitudes", {0.001, 0.002, 0.003, 0.004, 0.005, 0.006, 0.007, 0.008},
+                  "Amplitudes of the kinematic motion for the equivalent conicity (EN 15302).", "m",
+                  0, Range::positive());
+  spec.flag("Chart", true,
+            "Draw geometry.png: profiles with contact points, rolling radius difference and "
+            "contact angles against the shift (needs python3 with matplotlib).");
+  return spec;
+}
+
+}  // namespace
+
+ModuleDescriptor wheelset_on_track_module() {
+  ModuleDescriptor module;
+  module.name = "wheelset on track";
+  module.summary = "rigid wheel-rail contact geometry, contact table and equivalent conicity";
+  module.parameters = wheelset_on_track_parameters;
+  module.create = [](const Teuchos::ParameterList& parameters) {
+    return std::make_unique<WheelsetOnTrackStep>(parameters);
+  };
+  module.needs_mesh = false;
+  return module;
+}
+
+}  // namespace railfe

@@ -1,0 +1,273 @@
+#include "physics/contact_geometry/wheelset_on_track_step.hpp"
+
+#include <cmath>
+
+#include "contact/geometry/conicity.hpp"
+#include "contact/geometry/contact_table.hpp"
+#include "contact/geometry/profile_file.hpp"
+#include "framework/base/error.hpp"
+#include "framework/output/csv_writer.hpp"
+#include "physics/common/chart_script.hpp"
+
+namespace railfe {
+
+namespace {
+
+std::shared_ptr<const ProfileCurve> read_curve(const std::string& file, ProfileType role,
+                                               const ProfileCheckSettings& checks,
+                                               const std::string& where) {
+  const ProfileFile profile = read_profile_file(file, checks);
+  if (profile.type != role && profile.type != ProfileType::unspecified)
+    throw_input_error(file, "",
+                      std::string("is a ") +
+                          (profile.type == ProfileType::rail ? "rail" : "wheel") +
+                          " profile, given as " + where,
+                      role == ProfileType::rail ? "a rail profile" : "a wheel profile");
+  std::vector<Vec2> points;
+  for (const auto& p : profile.points)
+    points.push_back({p[0], p[1]});
+  return spline_curve(points);
+}
+
+const char* side_name(TrackSide side) {
+  return side == TrackSide::left ? "left" : "right";
+}
+
+}  // namespace
+
+WheelsetOnTrackStep::WheelsetOnTrackStep(const Teuchos::ParameterList& parameters)
+    : parameters_(&parameters) {}
+
+void WheelsetOnTrackStep::check(const CheckContext& context) {
+  const Deck& deck = context.model.deck();
+  const auto& profiles = parameters_->sublist("Profiles");
+  ProfileCheckSettings checks;
+  checks.smoothing_passes = profiles.get<int>("Smoothing passes");
+  checks.kink_angle_degrees = profiles.get<double>("Kink angle");
+  checks.zigzag_angle_degrees = profiles.get<double>("Zig-zag angle");
+  auto file = [&](const std::string& key, const std::string& shipped) {
+    const auto given = profiles.get<std::string>(key);
+    return given.empty() ? shipped_profile(shipped) : deck.resolve(given);
+  };
+  const auto rail = read_curve(file("Rail", "MBench_UIC60_v3.prr"), ProfileType::rail, checks,
+                               context.path + "/Profiles/Rail");
+  const auto wheel = read_curve(file("Wheel", "MBench_S1002_v3.prw"), ProfileType::wheel, checks,
+                                context.path + "/Profiles/Wheel");
+  const auto& t = parameters_->sublist("Track");
+  TrackLayout track{t.get<double>("Gauge"), t.get<double>("Gauge point depth"),
+                    t.get<double>("Inclination"), profiles.get<bool>("Rail canted")};
+  WheelsetLayout wheelset{t.get<double>("Back to back"), t.get<double>("Flange back"),
+                          t.get<double>("Nominal radius")};
+  geometry_ = std::make_unique<WheelRailGeometry>(rail, wheel, track, wheelset);
+
+  poses_.clear();
+  const auto& poses = parameters_->sublist("Poses");
+  for (auto it = poses.begin(); it != poses.end(); ++it) {
+    const auto& p = poses.sublist(poses.name(it));
+    poses_.push_back({poses.name(it),
+                      {p.get<double>("Lateral shift"), p.get<double>("Vertical"),
+                       p.get<double>("Roll"), p.get<double>("Yaw")},
+                      p.get<bool>("Rigid")});
+  }
+  const double range = parameters_->get<double>("Table half range");
+  const double resolution = parameters_->get<double>("Table resolution");
+  if (range / resolution > 50000)
+    throw_input_error(context.source(), context.path + "/Table resolution",
+                      "gives more than 100001 table rows", "at least Table half range / 50000");
+}
+
+void WheelsetOnTrackStep::run(StepContext& context) {
+  const bool root = context.model.comm().is_root();
+  const std::string section = "Step " + context.step_name + " (wheelset on track)";
+  const WheelRailGeometry& geometry = *geometry_;
+  const double range = parameters_->get<double>("Table half range");
+  const int half_rows =
+      static_cast<int>(std::lround(range / parameters_->get<double>("Table resolution")));
+  const int check_samples = parameters_->get<int>("Check samples");
+  auto progress = context.progress("contact table", 1);
+  const ContactTable table(geometry, range, 2 * half_rows + 1, check_samples);
+  progress.finish();
+
+  CsvWriter rows(context.output.staging_path("contact_table.csv"),
+                 {"lateral_m", "vertical_m", "roll_rad", "delta_r_m", "converged", "left_part",
+                  "left_rolling_radius_m", "left_contact_angle_rad", "left_y_m", "right_part",
+                  "right_rolling_radius_m", "right_contact_angle_rad", "right_y_m"},
+                 root);
+  int unconverged = 0;
+  for (std::size_t i = 0; i < table.rows().size(); ++i) {
+    const RigidContact& r = table.rows()[i];
+    unconverged += r.converged ? 0 : 1;
+    std::vector<std::string> cells = {
+        CsvWriter::format(r.lateral), CsvWriter::format(r.vertical), CsvWriter::format(r.roll),
+        CsvWriter::format(table.rolling_radius_difference(i)), r.converged ? "1" : "0"};
+    for (TrackSide side : {TrackSide::left, TrackSide::right}) {
+      const ContactPoint& c = r.active(side);
+      cells.insert(cells.end(),
+                   {c.flange ? "flange" : "tread", CsvWriter::format(c.rolling_radius),
+                    CsvWriter::format(c.contact_angle), CsvWriter::format(c.rail_point.y)});
+    }
+    rows.write_row(cells);
+  }
+
+  CsvWriter contacts(context.output.staging_path("contacts.csv"),
+                     {"contact",
+                      "pose",
+                      "lateral_m",
+                      "vertical_m",
+                      "roll_rad",
+                      "yaw_rad",
+                      "side",
+                      "part",
+                      "status",
+                      "iterations",
+                      "y_m",
+                      "z_m",
+                      "x_m",
+                      "contact_angle_rad",
+                      "rolling_radius_m",
+                      "gap_m",
+                      "penetration_m",
+                      "wheel_lateral_curvature_1pm",
+                      "rail_lateral_curvature_1pm",
+                      "wheel_rolling_curvature_1pm",
+                      "A_1pm",
+                      "B_1pm"},
+                     root);
+  int searches = 0, failed = 0, iterations = 0;
+  for (const DeckPose& deck_pose : poses_) {
+    WheelsetPose pose = deck_pose.pose;
+    if (deck_pose.rigid) {
+      const RigidContact rigid =
+          solve_rigid_contact(geometry, pose.lateral, pose.yaw, nullptr, check_samples);
+      if (!rigid.converged)
+        throw RunError(context.path + "/Poses/" + deck_pose.name +
+                       ": the rigid wheelset's vertical position and roll did not converge");
+      pose.vertical = rigid.vertical;
+      pose.roll = rigid.roll;
+    }
+    for (TrackSide side : {TrackSide::left, TrackSide::right})
+      for (bool flange : {false, true}) {
+        auto start = table.start(side, flange, pose.lateral);
+        ContactPoint c = search_contact(geometry, side, flange, pose, start[0], start[1]);
+        if (c.status == SearchStatus::not_converged || c.status == SearchStatus::not_a_minimum) {
+          const GapSample sample = least_gap_sample(geometry, side, flange, pose);
+          c = search_contact(geometry, side, flange, pose, sample.s_wheel, sample.s_rail);
+        }
+        ++searches;
+        failed += c.status == SearchStatus::not_converged ? 1 : 0;
+        iterations += c.iterations;
+        contacts.write_row(
+            {deck_pose.name + " " + side_name(side) + (flange ? " flange" : " tread"),
+             deck_pose.name,
+             CsvWriter::format(pose.lateral),
+             CsvWriter::format(pose.vertical),
+             CsvWriter::format(pose.roll),
+             CsvWriter::format(pose.yaw),
+             side_name(side),
+             flange ? "flange" : "tread",
+             status_name(c.status),
+             std::to_string(c.iterations),
+             CsvWriter::format(c.rail_point.y),
+             CsvWriter::format(c.rail_point.z),
+             CsvWriter::format(c.x),
+             CsvWriter::format(c.contact_angle),
+             CsvWriter::format(c.rolling_radius),
+             CsvWriter::format(c.gap),
+             CsvWriter::format(c.penetration()),
+             CsvWriter::format(c.wheel_lateral_curvature),
+             CsvWriter::format(c.rail_lateral_curvature),
+             CsvWriter::format(c.wheel_rolling_curvature),
+             CsvWriter::format(c.relative_curvature_rolling()),
+             CsvWriter::format(c.relative_curvature_lateral())});
+      }
+  }
+
+  const double e = table.half_contact_distance(), r0 = table.centred_rolling_radius();
+  const double first = table.rows().front().lateral;
+  const double step = table.rows()[1].lateral - first;
+  auto delta_r = [&](double y) {
+    const double position = std::clamp((y - first) / step, 0.0, table.rows().size() - 1.0);
+    const std::size_t i = std::min<std::size_t>(position, table.rows().size() - 2);
+    const double w = position - i;
+    return (1 - w) * table.rolling_radius_difference(i) +
+           w * table.rolling_radius_difference(i + 1);
+  };
+  CsvWriter conicity(context.output.staging_path("conicity.csv"),
+                     {"amplitude_m", "wavelength_m", "equivalent_conicity"}, root);
+  const auto& amplitudes = parameters_->get<Teuchos::Array<double>>("Conicity amplitudes");
+  for (double amplitude : amplitudes) {
+    // Beyond the table the rolling radius difference is unknown: no conicity there.
+    const double wavelength =
+        amplitude <= range ? kinematic_wavelength(delta_r, e, r0, amplitude) : std::nan("");
+    const double gamma = equivalent_conicity(wavelength, e, r0);
+    conicity.write_row(std::vector<double>{amplitude, wavelength, gamma});
+    if (std::abs(amplitude - 0.003) < 1e-12)
+      context.summary.add(section, "equivalent conicity at 3 mm", gamma);
+  }
+  CsvWriter results(
+      context.output.staging_path("contact_summary.csv"),
+      {"step", "flange_contact_right_m", "flange_contact_left_m", "half_contact_distance_m",
+       "centred_rolling_radius_m", "table_rows_not_converged"},
+      root);
+  results.write_row({context.step_name,
+                     CsvWriter::format(table.flange_contact_shift(TrackSide::right)),
+                     CsvWriter::format(table.flange_contact_shift(TrackSide::left)),
+                     CsvWriter::format(e), CsvWriter::format(r0), std::to_string(unconverged)});
+  results.flush();
+  context.summary.add(section, "table rows", static_cast<double>(table.rows().size()));
+  context.summary.add(section, "table rows not converged", unconverged);
+  context.summary.add(section, "flange contact from, right",
+                      table.flange_contact_shift(TrackSide::right) * 1e3, "mm");
+  context.summary.add(section, "flange contact from, left",
+                      table.flange_contact_shift(TrackSide::left) * 1e3, "mm");
+  context.summary.add(section, "half distance between contact points", e, "m");
+  context.summary.add(section, "centred rolling radius", r0, "m");
+  context.summary.add(section, "pose searches", searches);
+  context.summary.add(section, "pose searches not converged", failed);
+  context.summary.add(section, "mean iterations per search",
+                      searches ? double(iterations) / searches : 0.0);
+  if (unconverged > 0)
+    context.summary.add(section, "warning",
+                        std::to_string(unconverged) +
+                            " table rows did not converge (see converged in contact_table.csv)");
+
+  CsvWriter profile_points(context.output.staging_path("profiles.csv"),
+                           {"pose", "body", "side", "y_m", "z_m"}, root);
+  for (TrackSide side : {TrackSide::left, TrackSide::right}) {
+    const ProfileCurve& rail = geometry.rail(side);
+    for (int k = 0; k <= 400; ++k) {
+      const Vec2 p = rail.at(rail.begin() + (rail.end() - rail.begin()) * k / 400).p;
+      profile_points.write_row(
+          {"", "rail", side_name(side), CsvWriter::format(p.y), CsvWriter::format(p.z)});
+    }
+  }
+  for (const DeckPose& deck_pose : poses_) {
+    WheelsetPose pose = deck_pose.pose;
+    if (deck_pose.rigid) {
+      const RigidContact rigid = solve_rigid_contact(geometry, pose.lateral, pose.yaw, nullptr, 0);
+      pose.vertical = rigid.vertical;
+      pose.roll = rigid.roll;
+    }
+    for (TrackSide side : {TrackSide::left, TrackSide::right}) {
+      const ProfileCurve& wheel = geometry.wheel(side);
+      for (int k = 0; k <= 400; ++k) {
+        const LocusPoint p =
+            geometry.locus(side, wheel.begin() + (wheel.end() - wheel.begin()) * k / 400, pose);
+        profile_points.write_row({deck_pose.name, "wheel", side_name(side),
+                                  CsvWriter::format(p.y.v), CsvWriter::format(p.z.v)});
+      }
+    }
+  }
+  rows.flush();
+  contacts.flush();
+  conicity.flush();
+  profile_points.flush();
+  if (parameters_->get<bool>("Chart"))
+    draw_chart(
+        context, section, "contact_geometry_chart.py",
+        {context.output.staging_path("profiles.csv"), context.output.staging_path("contacts.csv"),
+         context.output.staging_path("contact_table.csv"),
+         context.output.staging_path("geometry.png")});
+}
+
+}  // namespace railfe
