@@ -1,12 +1,15 @@
 // railfe-contact-geometry: the contact-geometry studies that need many searches and a clock,
 // kept out of the unit tests. "stability OUT.csv" runs the online search across the S1002/60E1
 // shift range three ways (plain Newton or trust region, centred or table start) against a fine
-// table; "benchmark OUT.csv" times the online search, the table lookup and a 3000-shift table.
+// table; "benchmark OUT.csv" times the online search, the table lookup and a 3000-shift table;
+// "resolution OUT.csv" charts the table's build time against its accuracy.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <random>
 #include <string>
 
@@ -115,16 +118,60 @@ int benchmark(const std::string& out) {
   return 0;
 }
 
+// Speed against accuracy of the table: build time and the error of its interpolated rolling
+// radius difference and flange contact shift against a 0.002 mm table, per resolution.
+int resolution(const std::string& out) {
+  const WheelRailGeometry geometry = benchmark_geometry();
+  const double range = 0.015;
+  const ContactTable reference(geometry, range, 15001);
+  const double flange = reference.flange_contact_shift(TrackSide::right);
+  std::ofstream csv(out);
+  csv << "resolution_m,rows,build_s,delta_r_rms_error_m,delta_r_median_error_m,"
+         "flange_shift_error_m\n";
+  for (double step : {1e-3, 5e-4, 2.5e-4, 1e-4, 5e-5, 2e-5, 1e-5, 5e-6}) {
+    const int rows = 2 * static_cast<int>(std::lround(range / step)) + 1;
+    double build = 1e300;
+    std::unique_ptr<ContactTable> table;
+    for (int repeat = 0; repeat < 3; ++repeat) {
+      const auto start = std::chrono::steady_clock::now();
+      table = std::make_unique<ContactTable>(geometry, range, rows);
+      build = std::min(build, seconds_since(start));
+    }
+    std::vector<double> errors;
+    for (std::size_t i = 0; i < reference.rows().size(); ++i) {
+      const double y = reference.rows()[i].lateral;
+      const double position = (y + range) / step;
+      const std::size_t k = std::min<std::size_t>(position, table->rows().size() - 2);
+      const double w = position - k;
+      const double interpolated = (1 - w) * table->rolling_radius_difference(k) +
+                                  w * table->rolling_radius_difference(k + 1);
+      errors.push_back(std::abs(interpolated - reference.rolling_radius_difference(i)));
+    }
+    double sum = 0;
+    for (double e : errors)
+      sum += e * e;
+    std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
+    csv << step << ',' << rows << ',' << build << ',' << std::sqrt(sum / errors.size()) << ','
+        << errors[errors.size() / 2] << ','
+        << std::abs(table->flange_contact_shift(TrackSide::right) - flange) << '\n';
+    std::cout << "resolution " << step * 1e3 << " mm: " << build << " s\n";
+  }
+  std::cout << "wrote " << out << '\n';
+  return 0;
+}
+
 }  // namespace
 }  // namespace railfe
 
 int main(int argc, char** argv) {
   const std::string mode = argc > 1 ? argv[1] : "";
-  if (argc != 3 || (mode != "stability" && mode != "benchmark")) {
-    std::cerr << "usage: railfe-contact-geometry stability|benchmark OUT.csv\n";
+  if (argc != 3 || (mode != "stability" && mode != "benchmark" && mode != "resolution")) {
+    std::cerr << "usage: railfe-contact-geometry stability|benchmark|resolution OUT.csv\n";
     return 2;
   }
   try {
+    if (mode == "resolution")
+      return railfe::resolution(argv[2]);
     return mode == "stability" ? railfe::stability(argv[2]) : railfe::benchmark(argv[2]);
   } catch (const std::exception& e) {
     std::cerr << e.what() << '\n';

@@ -67,7 +67,7 @@ def main():
         ax.grid(alpha=0.3)
         ax.set_title("rigid wheelset (dashed: flange contact)", fontsize=10)
     fig.tight_layout()
-    fig.savefig(png, dpi=110)
+    fig.savefig(png, dpi=110, format="png")  # the step hands a staging name (.part)
 
 
 if __name__ == "__main__":
