@@ -1,10 +1,13 @@
 #pragma once
 /// \file
-/// Online contact-point search between a wheel and a rail in the track's cross-section: Newton
-/// iterations with a trust region on the two contact conditions (the rail tangent is orthogonal
-/// to the wheel-to-rail distance vector; the rail normal is orthogonal to the wheel tangent),
-/// solved on the wheel's contact locus so that yaw is taken into account. Tread and flange are
-/// searched separately, so a wheel can touch at two points.
+/// Online contact-point search between a wheel and a rail in the track's cross-section, on the
+/// wheel's contact locus so that yaw is taken into account. The two contact conditions are
+/// solved nested: for a wheel parameter, Newton finds its foot on the rail (the rail tangent
+/// orthogonal to the distance); a trust-region Newton iteration on the wheel parameter then
+/// minimises the signed gap, whose slope is the second condition (the rail normal orthogonal to
+/// the wheel tangent). Minimising the gap, not the conditions' residual, keeps near-conformal
+/// contact well posed (docs/theory.md). Tread and flange are searched separately, so a wheel can
+/// touch at two points.
 
 #include <string>
 
@@ -25,9 +28,9 @@ std::string status_name(SearchStatus status);
 
 /// Settings of the Newton iterations.
 struct SearchSettings {
-  int max_iterations = 50;       ///< Newton iterations before giving up
-  double tolerance = 1e-12;      ///< on the step and the conditions (m)
-  double trust_radius = 2e-3;    ///< initial trust-region radius in the parameters (m)
+  int max_iterations = 50;       ///< Newton iterations on the wheel parameter before giving up
+  double tolerance = 1e-12;      ///< converged when the Newton correction is below this (m)
+  double trust_radius = 2e-3;    ///< initial trust-region radius in the wheel parameter (m)
   bool use_trust_region = true;  ///< false: plain Newton (clipped to the part)
 };
 

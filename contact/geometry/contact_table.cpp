@@ -76,8 +76,18 @@ RigidContact solve_rigid_contact(const WheelRailGeometry& geometry, double later
       continue;
     }
     const double det = jacobian[0][0] * jacobian[1][1] - jacobian[0][1] * jacobian[1][0];
-    state.vertical -= (jacobian[1][1] * gap[0] - jacobian[0][1] * gap[1]) / det;
-    state.roll -= (-jacobian[1][0] * gap[0] + jacobian[0][0] * gap[1]) / det;
+    double vertical_step = -(jacobian[1][1] * gap[0] - jacobian[0][1] * gap[1]) / det;
+    double roll_step = -(-jacobian[1][0] * gap[0] + jacobian[0][0] * gap[1]) / det;
+    // The least gap is only piecewise smooth in the pose (the contact can jump): a step that
+    // would move a wheel by more than 1 mm is shortened, so Newton cannot overshoot into a
+    // far-off penetration and cycle there.
+    const double move = std::max(std::abs(vertical_step), std::abs(roll_step) * r0 * 2);
+    if (move > 1e-3) {
+      vertical_step *= 1e-3 / move;
+      roll_step *= 1e-3 / move;
+    }
+    state.vertical += vertical_step;
+    state.roll += roll_step;
   }
   return state;
 }
@@ -88,12 +98,29 @@ ContactTable::ContactTable(const WheelRailGeometry& geometry, double max_shift, 
   first_ = -max_shift;
   step_ = 2 * max_shift / (count - 1);
   rows_.resize(static_cast<std::size_t>(count));
+  // Continuation from the last row that closed; a row that does not close from there is tried
+  // once more from sampled starts, so one hard row does not spoil the rows beyond it.
+  auto solve = [&](int i, const RigidContact* last_closed) {
+    RigidContact row =
+        solve_rigid_contact(geometry, first_ + step_ * i, 0, last_closed, check_samples);
+    if (!row.converged && last_closed) {
+      RigidContact fresh =
+          solve_rigid_contact(geometry, first_ + step_ * i, 0, nullptr, check_samples);
+      if (fresh.converged)
+        row = fresh;
+    }
+    return row;
+  };
   const int centre = count / 2;
-  rows_[centre] = solve_rigid_contact(geometry, first_ + step_ * centre, 0, nullptr, check_samples);
-  for (int i = centre + 1; i < count; ++i)
-    rows_[i] = solve_rigid_contact(geometry, first_ + step_ * i, 0, &rows_[i - 1], check_samples);
-  for (int i = centre - 1; i >= 0; --i)
-    rows_[i] = solve_rigid_contact(geometry, first_ + step_ * i, 0, &rows_[i + 1], check_samples);
+  rows_[centre] = solve(centre, nullptr);
+  for (int direction : {1, -1}) {
+    const RigidContact* last_closed = rows_[centre].converged ? &rows_[centre] : nullptr;
+    for (int i = centre + direction; i >= 0 && i < count; i += direction) {
+      rows_[i] = solve(i, last_closed);
+      if (rows_[i].converged)
+        last_closed = &rows_[i];
+    }
+  }
   starts_.resize(rows_.size() * 8);
   for (std::size_t i = 0; i < rows_.size(); ++i)
     for (int side = 0; side < 2; ++side)

@@ -52,7 +52,7 @@ std::string where(const std::vector<Point>& p, const std::vector<int>& lines, st
 }  // namespace
 
 void check_profile(std::vector<Point>& points, const std::vector<int>& lines,
-                   const std::string& source, const ProfileCheckSettings& settings) {
+                   const std::string& source, const ProfileReadSettings& settings) {
   auto fail = [&](std::size_t i, const std::string& problem, const std::string& allowed) {
     throw_input_error(source, where(points, lines, i), problem, allowed);
   };
@@ -68,14 +68,18 @@ void check_profile(std::vector<Point>& points, const std::vector<int>& lines,
       if (segments_cross(points[i], points[i + 1], points[j], points[j + 1]))
         fail(j, "the profile crosses itself (a loop) here and at " + where(points, lines, i),
              "a profile that does not cross itself");
-  const bool increasing = points[1][0] > points[0][0];
-  for (std::size_t i = 1; i < points.size(); ++i)
-    if ((points[i][0] > points[i - 1][0]) != increasing)
-      fail(i,
-           points[i][0] == points[i - 1][0] ? "y equals the previous point's: a vertical step"
-                                            : "y turns back: the points are out of order",
-           std::string("y strictly ") + (increasing ? "increasing" : "decreasing") +
-               " along the list");
+  // A measured rail head may overhang (y turns back along its gauge face), so y need not be
+  // monotonic; but a list that reverses its direction of travel between two segments has
+  // points out of order.
+  for (std::size_t i = 1; i + 1 < points.size(); ++i) {
+    const double turn = turn_degrees(points, i);
+    if (std::abs(turn) > 90) {
+      std::ostringstream problem;
+      problem.precision(3);
+      problem << "the list turns back by " << std::abs(turn) << " degrees: points out of order";
+      fail(i + 1, problem.str(), "points listed in order along the profile");
+    }
+  }
   for (int pass = 0; pass < settings.smoothing_passes; ++pass) {
     std::vector<Point> smoothed = points;
     for (std::size_t i = 1; i + 1 < points.size(); ++i)

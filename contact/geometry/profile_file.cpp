@@ -151,7 +151,7 @@ void check_orientation(const ProfileFile& file) {
 
 }  // namespace
 
-ProfileFile read_profile_file(const std::string& path, const ProfileCheckSettings& checks) {
+ProfileFile read_profile_file(const std::string& path, const ProfileReadSettings& checks) {
   std::ifstream in(path);
   if (!in)
     throw_input_error(path, "", "profile file not found or not readable");
@@ -166,8 +166,10 @@ ProfileFile read_profile_file(const std::string& path, const ProfileCheckSetting
   else
     throw_input_error(path, "", "unknown profile format '" + extension + "'",
                       "SIMPACK .prr/.prw, MiniProf .ban/.whl, two-column .txt/.dat/.csv");
+  for (auto& point : file.points)
+    point[0] = (checks.mirror_y ? -1 : 1) * (point[0] - checks.y_origin);
   check_profile(file.points, file.lines, path, checks);
-  if (file.points[1][0] < file.points[0][0]) {
+  if (file.points.back()[0] < file.points.front()[0]) {
     std::reverse(file.points.begin(), file.points.end());
     std::reverse(file.lines.begin(), file.lines.end());
   }

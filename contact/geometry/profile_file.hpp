@@ -31,19 +31,21 @@ struct ProfileFile {
   std::string source;                    ///< the file, for messages
   ProfileType type = ProfileType::rail;  ///< from the header
   std::string comment;                   ///< the spline block's comment, if any
-  /// (y, z) in metres, y strictly increasing. Coordinates are as the file lists them: for the
+  /// (y, z) in metres, listed from the smaller to the larger y end (y need not be monotonic in
+  /// between). Coordinates are as the file lists them: for the
   /// Manchester benchmark's S1002 wheel, y is lateral from the running point (the flange on +y,
   /// its back face near y = 70 mm) and z grows radially outwards (the flange tip at z = 28 mm).
   std::vector<std::array<double, 2>> points;
   std::vector<int> lines;  ///< each point's line in the file
 };
 
-/// Reads a profile file of any of the formats above (lengths in metres, points in increasing
-/// y) and checks it with \p checks. The SIMPACK spline block's processing settings (shift,
-/// rotate, bound, mirror, inversion, smoothing) are not applied. A wheel's flange (its highest
-/// point) must lie on +y and a rail's top must be its lowest z. Throws InputError naming the
-/// file (and line) when it is missing, unreadable or fails a check.
-ProfileFile read_profile_file(const std::string& path, const ProfileCheckSettings& checks = {});
+/// Reads a profile file of any of the formats above (lengths in metres, listed from the smaller
+/// to the larger y end) after moving y to \p checks' origin and mirroring it, and checks it with
+/// \p checks. The SIMPACK spline block's processing
+/// settings (shift, rotate, bound, mirror, inversion, smoothing) are not applied. A wheel's flange
+/// (its highest point) must lie on +y and a rail's top must be its lowest z. Throws InputError
+/// naming the file (and line) when it is missing, unreadable or fails a check.
+ProfileFile read_profile_file(const std::string& path, const ProfileReadSettings& checks = {});
 
 /// Path of a profile file shipped with railfe in inputs/profiles (e.g. "MBench_S1002_v3.prw").
 std::string shipped_profile(const std::string& file_name);

@@ -186,5 +186,37 @@ TEST(S1002On60E1, PlainNewtonFromTheCentreFailsWhereTheTableStartDoesNot) {
   EXPECT_LE(most_iterations, 8);
 }
 
+TEST(MeasuredProfiles, WornWheelOnWornHighRailClosesOrSaysSo) {
+  // The measured heavy-haul pair: the rail's head overhangs (y turns back on both flanks), the
+  // wheel is listed from its flange back towards the field side (mirrored, running point 70 mm
+  // from the back). Within +-5 mm every row closes. Further out, where the worn flange (78
+  // degrees) comes into play, rows may not close, and they say so (converged false). No row
+  // that closed penetrates anywhere.
+  ProfileReadSettings wheel_axes;
+  wheel_axes.mirror_y = true;
+  wheel_axes.y_origin = 0.070;
+  auto curve = [](const std::string& name, const ProfileReadSettings& settings) {
+    std::vector<Vec2> points;
+    for (const auto& p : read_profile_file(shipped_profile(name), settings).points)
+      points.push_back({p[0], p[1]});
+    return spline_curve(points);
+  };
+  const WheelRailGeometry geometry(curve("site_b_hr.prr", {}),
+                                   curve("worn_high_mileage.prw", wheel_axes), TrackLayout{},
+                                   WheelsetLayout{});
+  const ContactTable table(geometry, 0.015, 121);
+  for (const auto& row : table.rows()) {
+    if (std::abs(row.lateral) <= 0.005 + 1e-12)
+      EXPECT_TRUE(row.converged) << "shift " << row.lateral;
+    if (!row.converged)
+      continue;
+    const WheelsetPose pose{row.lateral, row.vertical, row.roll, 0};
+    for (TrackSide side : {TrackSide::left, TrackSide::right})
+      for (bool flange : {false, true})
+        EXPECT_GT(least_gap_sample(geometry, side, flange, pose, 2000).gap, -1e-8)
+            << "shift " << row.lateral;
+  }
+}
+
 }  // namespace
 }  // namespace railfe

@@ -16,6 +16,14 @@ ParameterSpec profile_parameters() {
             "Wheel profile, y from the running point towards the flange, z radially outwards "
             "(SIMPACK .prw, MiniProf .whl or two-column text in mm); empty = the benchmark's "
             "S1002.");
+  spec.flag("Wheel mirrored", false,
+            "The wheel file's y runs towards the field side (as many measured profiles, from the "
+            "flange back, list it).");
+  spec.real("Wheel running point", 0,
+            "The wheel file's y of the running point (the nominal rolling radius), before "
+            "mirroring.",
+            "m");
+  spec.flag("Rail mirrored", false, "The rail file's y runs towards the gauge side.");
   spec.flag("Rail canted", true,
             "The rail profile is already drawn at the track's inclination (as the benchmark's "
             "is); false rotates it by Track/Inclination.");

@@ -1,6 +1,7 @@
 #include "physics/contact_geometry/wheelset_on_track_step.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "contact/geometry/conicity.hpp"
 #include "contact/geometry/contact_table.hpp"
@@ -14,7 +15,7 @@ namespace railfe {
 namespace {
 
 std::shared_ptr<const ProfileCurve> read_curve(const std::string& file, ProfileType role,
-                                               const ProfileCheckSettings& checks,
+                                               const ProfileReadSettings& checks,
                                                const std::string& where) {
   const ProfileFile profile = read_profile_file(file, checks);
   if (profile.type != role && profile.type != ProfileType::unspecified)
@@ -41,7 +42,7 @@ WheelsetOnTrackStep::WheelsetOnTrackStep(const Teuchos::ParameterList& parameter
 void WheelsetOnTrackStep::check(const CheckContext& context) {
   const Deck& deck = context.model.deck();
   const auto& profiles = parameters_->sublist("Profiles");
-  ProfileCheckSettings checks;
+  ProfileReadSettings checks;
   checks.smoothing_passes = profiles.get<int>("Smoothing passes");
   checks.kink_angle_degrees = profiles.get<double>("Kink angle");
   checks.zigzag_angle_degrees = profiles.get<double>("Zig-zag angle");
@@ -49,16 +50,31 @@ void WheelsetOnTrackStep::check(const CheckContext& context) {
     const auto given = profiles.get<std::string>(key);
     return given.empty() ? shipped_profile(shipped) : deck.resolve(given);
   };
-  const auto rail = read_curve(file("Rail", "MBench_UIC60_v3.prr"), ProfileType::rail, checks,
-                               context.path + "/Profiles/Rail");
-  const auto wheel = read_curve(file("Wheel", "MBench_S1002_v3.prw"), ProfileType::wheel, checks,
-                                context.path + "/Profiles/Wheel");
+  ProfileReadSettings rail_axes = checks, wheel_axes = checks;
+  rail_axes.mirror_y = profiles.get<bool>("Rail mirrored");
+  wheel_axes.mirror_y = profiles.get<bool>("Wheel mirrored");
+  wheel_axes.y_origin = profiles.get<double>("Wheel running point");
+  const std::string rail_file = file("Rail", "MBench_UIC60_v3.prr");
+  const std::string wheel_file = file("Wheel", "MBench_S1002_v3.prw");
+  const auto rail =
+      read_curve(rail_file, ProfileType::rail, rail_axes, context.path + "/Profiles/Rail");
+  const auto wheel =
+      read_curve(wheel_file, ProfileType::wheel, wheel_axes, context.path + "/Profiles/Wheel");
   const auto& t = parameters_->sublist("Track");
   TrackLayout track{t.get<double>("Gauge"), t.get<double>("Gauge point depth"),
                     t.get<double>("Inclination"), profiles.get<bool>("Rail canted")};
   WheelsetLayout wheelset{t.get<double>("Back to back"), t.get<double>("Flange back"),
                           t.get<double>("Nominal radius")};
-  geometry_ = std::make_unique<WheelRailGeometry>(rail, wheel, track, wheelset);
+  try {
+    geometry_ = std::make_unique<WheelRailGeometry>(rail, wheel, track, wheelset);
+  } catch (const std::invalid_argument& e) {
+    // The profiles read well but do not fit the track's conventions (no running point, no
+    // gauge point): name both files and the parameters that move them.
+    throw_input_error(context.source(), context.path + "/Profiles",
+                      std::string(e.what()) + " (rail " + rail_file + ", wheel " + wheel_file + ")",
+                      "a wheel through y = 0 (see Wheel running point, Wheel mirrored) and a rail "
+                      "reaching Track/Gauge point depth on its gauge side (see Rail mirrored)");
+  }
 
   poses_.clear();
   const auto& poses = parameters_->sublist("Poses");
