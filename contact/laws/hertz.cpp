@@ -1,0 +1,104 @@
+#include "contact/laws/hertz.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace railfe {
+
+namespace {
+
+// Complete elliptic integrals of the first and second kind of eccentricity e of an ellipse with
+// axis ratio g = short / long, and (K - E) / e^2, which stays finite as the ellipse becomes a
+// circle (series there, where K - E loses its digits).
+struct Elliptic {
+  double K, E, K_minus_E_over_e2;
+};
+
+Elliptic elliptic(double g) {
+  const double e2 = 1 - g * g;
+  const double e = std::sqrt(e2);
+  Elliptic r{std::comp_ellint_1(e), std::comp_ellint_2(e), 0};
+  r.K_minus_E_over_e2 =
+      e2 < 1e-4 ? M_PI / 4 * (1 + 3 * e2 / 8 + 15 * e2 * e2 / 64) : (r.K - r.E) / e2;
+  return r;
+}
+
+// Ratio of the larger to the smaller relative curvature that an ellipse of axis ratio g needs:
+// (E / g^2 - K) / (K - E) = E / (g^2 (K - E) / e^2) - 1, which grows from 1 (circle) as g falls.
+double curvature_ratio(double g) {
+  const Elliptic f = elliptic(g);
+  return f.E / (g * g * f.K_minus_E_over_e2) - 1;
+}
+
+// Axis ratio g (short / long) for a curvature ratio r >= 1, by bisection in log g (the ratio is
+// monotonic in g).
+double axis_ratio(double r) {
+  if (r <= 1)
+    return 1;
+  double lo = std::log(1e-12), hi = 0;
+  for (int i = 0; i < 200 && hi - lo > 1e-15; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (curvature_ratio(std::exp(mid)) > r ? lo : hi) = mid;
+  }
+  return std::exp(0.5 * (lo + hi));
+}
+
+// Completes a contact whose A, B, load and semi-axes are set.
+HertzContact finish(HertzContact c, double modulus, const Elliptic& f) {
+  c.pressure = 3 * c.load / (2 * M_PI * c.a * c.b);
+  c.approach = c.pressure * std::min(c.a, c.b) * f.K / modulus;
+  c.stiffness = c.load / std::pow(c.approach, 1.5);
+  return c;
+}
+
+}  // namespace
+
+double contact_modulus(const ElasticBody& first, const ElasticBody& second) {
+  return 1 / ((1 - first.poisson * first.poisson) / first.young +
+              (1 - second.poisson * second.poisson) / second.young);
+}
+
+HertzContact hertz_contact(double A, double B, double modulus, double load) {
+  if (!(A > 0 && B > 0 && modulus > 0 && load > 0))
+    throw std::invalid_argument("Hertz needs positive curvatures A and B, modulus and load");
+  HertzContact c;
+  c.A = A;
+  c.B = B;
+  c.load = load;
+  // The long semi-axis lies along the smaller curvature (Johnson 4.39).
+  const double small = std::min(A, B);
+  const double g = axis_ratio(std::max(A, B) / small);
+  const Elliptic f = elliptic(g);
+  const double longer = std::cbrt(3 * load * f.K_minus_E_over_e2 / (2 * M_PI * modulus * small));
+  c.a = A <= B ? longer : g * longer;
+  c.b = A <= B ? g * longer : longer;
+  return finish(c, modulus, f);
+}
+
+HertzContact hertz_from_approach(double A, double B, double modulus, double approach) {
+  if (!(approach > 0))
+    throw std::invalid_argument("Hertz needs a positive approach");
+  // Stiffness does not depend on the load: find it at a unit load.
+  const HertzContact unit = hertz_contact(A, B, modulus, 1.0);
+  return hertz_contact(A, B, modulus, unit.stiffness * std::pow(approach, 1.5));
+}
+
+HertzContact hertz_from_semi_axes(double a, double b, double modulus, double load) {
+  if (!(a > 0 && b > 0 && modulus > 0 && load > 0))
+    throw std::invalid_argument("Hertz needs positive semi-axes, modulus and load");
+  const double longer = std::max(a, b);
+  const double g = std::min(a, b) / longer;
+  const Elliptic f = elliptic(g);
+  const double small =
+      3 * load * f.K_minus_E_over_e2 / (2 * M_PI * modulus * longer * longer * longer);
+  const double large = small * curvature_ratio(g);
+  HertzContact c;
+  c.A = a >= b ? small : large;
+  c.B = a >= b ? large : small;
+  c.load = load;
+  c.a = a;
+  c.b = b;
+  return finish(c, modulus, f);
+}
+
+}  // namespace railfe
