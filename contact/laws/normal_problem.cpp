@@ -1,0 +1,94 @@
+#include "contact/laws/normal_problem.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace railfe {
+
+NormalSolution solve_normal(const HalfSpaceKernels& kernels, const std::vector<double>& separation,
+                            double load, double tolerance, int max_iterations) {
+  const ContactGrid& grid = kernels.grid();
+  const std::size_t n = static_cast<std::size_t>(grid.size());
+  if (separation.size() != n || !(load > 0))
+    throw std::invalid_argument("the normal problem needs a separation per element and a load");
+  const double cell = grid.dx * grid.dy;
+  NormalSolution s;
+  s.pressure.assign(n, load / (cell * static_cast<double>(n)));
+  std::vector<double> gap(n), direction(n, 0.0), previous(n);
+  double gap_norm_old = 1;
+  bool restart = true;
+  for (s.iterations = 1; s.iterations <= max_iterations; ++s.iterations) {
+    const std::vector<double> u = kernels.normal(s.pressure);
+    // Gap relative to its mean over the contact set: the mean is the approach.
+    double mean = 0;
+    int in_contact = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      gap[i] = separation[i] + u[i];
+      if (s.pressure[i] > 0) {
+        mean += gap[i];
+        ++in_contact;
+      }
+    }
+    mean /= std::max(in_contact, 1);
+    s.approach = mean;
+    double gap_norm = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      gap[i] -= mean;
+      if (s.pressure[i] > 0)
+        gap_norm += gap[i] * gap[i];
+    }
+    for (std::size_t i = 0; i < n; ++i)
+      direction[i] = s.pressure[i] > 0
+                         ? gap[i] + (restart ? 0.0 : gap_norm / gap_norm_old * direction[i])
+                         : 0.0;
+    gap_norm_old = gap_norm;
+    std::vector<double> r = kernels.normal(direction);
+    double r_mean = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (s.pressure[i] > 0)
+        r_mean += r[i];
+    r_mean /= std::max(in_contact, 1);
+    double numerator = 0, denominator = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (s.pressure[i] > 0) {
+        numerator += gap[i] * direction[i];
+        denominator += (r[i] - r_mean) * direction[i];
+      }
+    const double tau = denominator != 0 ? numerator / denominator : 0.0;
+    previous = s.pressure;
+    for (std::size_t i = 0; i < n; ++i)
+      if (s.pressure[i] > 0)
+        s.pressure[i] = std::max(s.pressure[i] - tau * direction[i], 0.0);
+    // Elements outside the contact that penetrate join it.
+    restart = false;
+    for (std::size_t i = 0; i < n; ++i)
+      if (s.pressure[i] == 0 && previous[i] == 0 && gap[i] < 0) {
+        s.pressure[i] = -tau * gap[i];
+        restart = true;
+      }
+    double total = 0;
+    for (double p : s.pressure)
+      total += p * cell;
+    if (total <= 0)
+      break;
+    double change = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      s.pressure[i] *= load / total;
+      change += std::abs(s.pressure[i] - previous[i]) * cell;
+    }
+    if (change / load < tolerance) {
+      s.converged = true;
+      break;
+    }
+  }
+  s.load = 0;
+  for (double p : s.pressure) {
+    s.load += p * cell;
+    s.max_pressure = std::max(s.max_pressure, p);
+    s.area += p > 0 ? cell : 0.0;
+  }
+  return s;
+}
+
+}  // namespace railfe

@@ -1,0 +1,142 @@
+#include "contact/laws/tangential_problem.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace railfe {
+
+double FrictionLaw::at(double speed) const {
+  return dynamic_coefficient +
+         (static_coefficient - dynamic_coefficient) * std::exp(-decay * std::abs(speed));
+}
+
+TangentialSolution solve_tangential(const HalfSpaceKernels& kernels,
+                                    const std::vector<double>& pressure, const Creepages& creep,
+                                    const FrictionLaw& friction,
+                                    const TangentialSettings& settings) {
+  const ContactGrid& g = kernels.grid();
+  const int mx = g.mx;
+  const std::size_t n = static_cast<std::size_t>(g.size());
+  TangentialSolution t;
+  t.qx.assign(n, 0.0);
+  t.qy.assign(n, 0.0);
+  t.sx.assign(n, 0.0);
+  t.sy.assign(n, 0.0);
+  t.adhesion.assign(n, false);
+  // Elements in contact, and the runs of elements (per row) whose displacement they read:
+  // themselves and their neighbour towards the leading edge.
+  std::vector<int> contact;
+  std::vector<char> is_relevant(n, 0);
+  for (std::size_t e = 0; e < n; ++e)
+    if (pressure[e] > 0) {
+      const int i = static_cast<int>(e % mx), j = static_cast<int>(e / mx);
+      if (i == 0 || i + 1 >= mx || j == 0 || j + 1 >= g.my)
+        throw std::invalid_argument(
+            "the contact reaches the edge of the grid: the grid must enclose it with at least "
+            "one element to spare on every side");
+      contact.push_back(static_cast<int>(e));
+      is_relevant[e] = is_relevant[e + 1] = 1;
+    }
+  struct Run {
+    int j, begin, end;  // row, first and one-past-last element
+  };
+  std::vector<Run> runs;
+  for (int j = 0; j < g.my; ++j)
+    for (int i = 0; i < mx; ++i)
+      if (is_relevant[static_cast<std::size_t>(j) * mx + i]) {
+        if (runs.empty() || runs.back().j != j || runs.back().end != i)
+          runs.push_back({j, i, i + 1});
+        else
+          ++runs.back().end;
+      }
+  double self_xx, self_xy, self_yy;
+  kernels.tangential_influence(0, 0, self_xx, self_xy, self_yy);
+  double p_max = 0;
+  for (int e : contact)
+    p_max = std::max(p_max, pressure[e]);
+  const double scale = friction.static_coefficient * p_max;
+  // The steady state is the fixed point of rolling one element length: each material point's
+  // displacement is the one it had an element ahead, less the rigid slip, unless it slides.
+  // Sweeping each strip from the leading edge, every element takes the traction that best meets
+  // that target with the others held (a projected Gauss–Seidel step on the symmetric influence
+  // matrix, so |q| <= μp and slip opposes traction), reading the target from the displacement
+  // its neighbour ahead has just received.
+  std::vector<double> ux(n, 0.0), uy(n, 0.0);
+  std::vector<int> order = contact;
+  std::sort(order.begin(), order.end(),
+            [&](int a, int b) { return a / mx != b / mx ? a / mx < b / mx : a % mx > b % mx; });
+  for (t.sweeps = 1; t.sweeps <= settings.max_sweeps; ++t.sweeps) {
+    double largest = 0;
+    for (int e : order) {
+      const int i = e % mx, j = e / mx;
+      const double x = g.x(i), y = g.y(j);
+      const double bx =
+          (i + 1 < mx ? ux[e + 1] : 0.0) - (creep.longitudinal - creep.spin * y) * g.dx;
+      const double by = (i + 1 < mx ? uy[e + 1] : 0.0) - (creep.lateral + creep.spin * x) * g.dx;
+      const double bound =
+          friction.at(friction.rolling_speed * std::hypot(t.sx[e], t.sy[e])) * pressure[e];
+      // The element's exact block minimisation: min ½ (q - q0)ᵀ D (q - q0) + rᵀ q over |q| <= bound
+      // with D its self-influence and r its residual; where the bound is active the slip
+      // r + D (q - q0) = -λ q opposes the traction, as Coulomb requires.
+      const double rx = ux[e] - bx - self_xx * t.qx[e], ry = uy[e] - by - self_yy * t.qy[e];
+      double qx = -rx / self_xx, qy = -ry / self_yy;
+      if (bound <= 0) {
+        qx = qy = 0;
+      } else if (std::hypot(qx, qy) > bound) {
+        double lo = 0, hi = std::max(self_xx, self_yy);
+        while (std::hypot(rx / (self_xx + hi), ry / (self_yy + hi)) > bound)
+          hi *= 2;
+        for (int k = 0; k < 100 && hi - lo > 1e-15 * hi; ++k) {
+          const double mid = 0.5 * (lo + hi);
+          (std::hypot(rx / (self_xx + mid), ry / (self_yy + mid)) > bound ? lo : hi) = mid;
+        }
+        const double lambda = 0.5 * (lo + hi);
+        qx = -rx / (self_xx + lambda);
+        qy = -ry / (self_yy + lambda);
+      }
+      const double dqx = qx - t.qx[e], dqy = qy - t.qy[e];
+      largest = std::max(largest, std::hypot(dqx, dqy));
+      t.qx[e] = qx;
+      t.qy[e] = qy;
+      if (dqx != 0 || dqy != 0)
+        for (const Run& run : runs) {
+          const double *xx, *xy, *yy;
+          kernels.tangential_rows(run.begin - i, run.j - j, xx, xy, yy);
+          double* tx = &ux[static_cast<std::size_t>(run.j) * mx + run.begin];
+          double* ty = &uy[static_cast<std::size_t>(run.j) * mx + run.begin];
+          for (int k = 0; k < run.end - run.begin; ++k) {
+            tx[k] += xx[k] * dqx + xy[k] * dqy;
+            ty[k] += xy[k] * dqx + yy[k] * dqy;
+          }
+        }
+      t.sx[e] = (ux[e] - bx) / g.dx;
+      t.sy[e] = (uy[e] - by) / g.dx;
+    }
+    if (largest <= settings.tolerance * scale) {
+      t.converged = true;
+      break;
+    }
+  }
+  for (int e : contact) {
+    const double bound =
+        friction.at(friction.rolling_speed * std::hypot(t.sx[e], t.sy[e])) * pressure[e];
+    t.adhesion[e] = std::hypot(t.qx[e], t.qy[e]) < bound * (1 - 1e-9);
+    if (t.adhesion[e])
+      t.sx[e] = t.sy[e] = 0;
+  }
+  const double cell = g.dx * g.dy;
+  double adhesion_area = 0, area = 0;
+  for (int e : contact) {
+    const double x = g.x(e % mx), y = g.y(e / mx);
+    t.forces.Fx += t.qx[e] * cell;
+    t.forces.Fy += t.qy[e] * cell;
+    t.forces.Mz += (x * t.qy[e] - y * t.qx[e]) * cell;
+    area += cell;
+    adhesion_area += t.adhesion[e] ? cell : 0.0;
+  }
+  t.adhesion_fraction = area > 0 ? adhesion_area / area : 0.0;
+  return t;
+}
+
+}  // namespace railfe

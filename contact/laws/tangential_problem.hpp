@@ -1,0 +1,53 @@
+#pragma once
+/// \file
+/// Kalker's steady-rolling tangential problem on the half-space grid, given the pressures: the
+/// slip s = w − ∂u/∂x (rigid slip w from the creepages, u the elastic tangential displacement
+/// difference, x the rolling direction; material enters at +x) vanishes where the traction is
+/// below the bound μ p (adhesion), and the traction is −μ p s/|s| where it slides. Friction may
+/// fall with the slip velocity: μ = μd + (μs − μd) exp(−c |v|), |v| = V |s|. Solved by
+/// Gauss–Seidel sweeps from the leading edge, each element taking its exact local solution with
+/// the others held; the sweeps stop when the tractions settle, and a solve that does not
+/// settle says so instead of returning forces.
+
+#include <vector>
+
+#include "contact/laws/halfspace.hpp"
+#include "contact/laws/kalker_linear.hpp"
+
+namespace railfe {
+
+/// Friction: Coulomb (static = dynamic) or falling with slip velocity.
+struct FrictionLaw {
+  double static_coefficient = 0.3;   ///< μs
+  double dynamic_coefficient = 0.3;  ///< μd
+  double decay = 0;                  ///< c (s/m)
+  double rolling_speed = 30;         ///< V (m/s), turns slip into slip velocity
+  /// μ at slip velocity \p speed (m/s).
+  double at(double speed) const;
+};
+
+/// Settings of the tangential solve.
+struct TangentialSettings {
+  int max_sweeps = 1000;     ///< Gauss–Seidel sweeps before giving up
+  double tolerance = 1e-10;  ///< on the largest traction change, relative to μs max p
+};
+
+/// A tangential solution.
+struct TangentialSolution {
+  std::vector<double> qx, qy;    ///< tractions on body 1 (Pa)
+  std::vector<double> sx, sy;    ///< slip (dimensionless; times V for velocity)
+  std::vector<bool> adhesion;    ///< per element in contact
+  CreepForces forces;            ///< N, N m
+  int sweeps = 0;                ///< sweeps taken
+  bool converged = false;        ///< the tractions settled
+  double adhesion_fraction = 0;  ///< of the contact area
+};
+
+/// Tangential tractions for pressures \p pressure (Pa per element of \p kernels' grid),
+/// creepages \p creep and friction \p friction.
+TangentialSolution solve_tangential(const HalfSpaceKernels& kernels,
+                                    const std::vector<double>& pressure, const Creepages& creep,
+                                    const FrictionLaw& friction,
+                                    const TangentialSettings& settings = {});
+
+}  // namespace railfe
