@@ -136,6 +136,8 @@ TangentialSolution solve_tangential(const HalfSpaceKernels& kernels,
     adhesion_area += t.adhesion[e] ? cell : 0.0;
   }
   t.adhesion_fraction = area > 0 ? adhesion_area / area : 0.0;
+  if (!t.converged)  // no number that could be mistaken for a result
+    t.forces = {std::nan(""), std::nan(""), std::nan("")};
   return t;
 }
 

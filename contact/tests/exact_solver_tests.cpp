@@ -122,6 +122,45 @@ TEST(ExactSolver, LargeCreepageSaturatesAtMuN) {
   EXPECT_EQ(t.adhesion_fraction, 0);
 }
 
+TEST(ExactSolver, CentralStripOfALongEllipseIsCartersRollingCylinder) {
+  // b / a = 10: the strip through the centre rolls as a 2-D cylinder. Carter: adhesion over the
+  // leading 2a' of the strip, and F = μP (1 - (a'/a)²) per unit length, for creepage
+  // ξ = μ a (1 - a'/a) / R with R from 2-D Hertz (p0 = a E* / 2R).
+  const int m = 40;
+  const double a = 5e-3, b = 10 * a, mu = 0.3;
+  const double modulus = contact_modulus({kE, kNu}, {kE, kNu});
+  const HertzContact h = hertz_from_semi_axes(a, b, modulus, kLoad);
+  const ContactGrid grid{-1.1 * a, -1.1 * b, 2.2 * a / m, 2.2 * b / m, m, m};
+  const HalfSpaceKernels kernels(grid, kG, kNu);
+  std::vector<double> separation(grid.size());
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < m; ++i)
+      separation[j * m + i] = h.A * grid.x(i) * grid.x(i) + h.B * grid.y(j) * grid.y(j);
+  const NormalSolution normal = solve_normal(kernels, separation, kLoad);
+  const int strip = m / 2;
+  const double y = grid.y(strip), half = a * std::sqrt(1 - (y / b) * (y / b));
+  const double p0 = h.pressure * std::sqrt(1 - (y / b) * (y / b));
+  const double radius = half * modulus / (2 * p0);
+  FrictionLaw coulomb;
+  coulomb.static_coefficient = coulomb.dynamic_coefficient = mu;
+  for (double ratio : {0.25, 0.5, 0.75}) {
+    const double creep = mu * half * (1 - ratio) / radius;
+    const TangentialSolution t = solve_tangential(kernels, normal.pressure, {creep, 0, 0}, coulomb);
+    ASSERT_TRUE(t.converged);
+    double force = 0, load = 0;
+    int in_contact = 0, adhering = 0;
+    for (int i = 0; i < m; ++i) {
+      const int e = strip * m + i;
+      force += t.qx[e] * grid.dx;
+      load += normal.pressure[e] * grid.dx;
+      in_contact += normal.pressure[e] > 0;
+      adhering += normal.pressure[e] > 0 && t.adhesion[e];
+    }
+    EXPECT_NEAR(-force / (mu * load), 1 - ratio * ratio, 0.015 * (1 - ratio * ratio));
+    EXPECT_NEAR(adhering, ratio * in_contact, 1.0);
+  }
+}
+
 TEST(ExactSolver, RefusesAGridThatDoesNotEncloseTheContact) {
   const Patch patch(20, 1.0);
   EXPECT_THROW(solve_tangential(patch.kernels, patch.normal.pressure, {1e-4, 0, 0}, {}),
