@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <unsupported/Eigen/FFT>
+
 namespace railfe {
 
 namespace {
@@ -54,6 +56,38 @@ HalfSpaceKernels::HalfSpaceKernels(const ContactGrid& grid, double G, double nu)
       yy_[k] = shear * ((1 - nu) * inverse_r + nu * over_element(integral_yy, X, Y, hx, hy));
       xy_[k] = shear * nu * over_element(integral_xy, X, Y, hx, hy);
     }
+  // The kernel wrapped onto the padded grid: offset (di, dj) at (di mod 2mx, dj mod 2my).
+  const int px = 2 * grid.mx, py = 2 * grid.my;
+  zz_spectrum_.assign(static_cast<std::size_t>(px) * py, 0.0);
+  for (int dj = -(grid.my - 1); dj < grid.my; ++dj)
+    for (int di = -(grid.mx - 1); di < grid.mx; ++di)
+      zz_spectrum_[static_cast<std::size_t>((dj + py) % py) * px + (di + px) % px] =
+          zz_[static_cast<std::size_t>(dj + grid.my - 1) * wx_ + (di + grid.mx - 1)];
+  fft2(zz_spectrum_, false);
+}
+
+void HalfSpaceKernels::fft2(std::vector<std::complex<double>>& data, bool inverse) const {
+  const int px = 2 * grid_.mx, py = 2 * grid_.my;
+  Eigen::FFT<double> fft;
+  std::vector<std::complex<double>> line, out;
+  for (int direction = 0; direction < 2; ++direction) {
+    const int length = direction == 0 ? px : py, count = direction == 0 ? py : px;
+    line.resize(static_cast<std::size_t>(length));
+    for (int c = 0; c < count; ++c) {
+      auto at = [&](int k) -> std::complex<double>& {
+        return direction == 0 ? data[static_cast<std::size_t>(c) * px + k]
+                              : data[static_cast<std::size_t>(k) * px + c];
+      };
+      for (int k = 0; k < length; ++k)
+        line[k] = at(k);
+      if (inverse)
+        fft.inv(out, line);
+      else
+        fft.fwd(out, line);
+      for (int k = 0; k < length; ++k)
+        at(k) = out[k];
+    }
+  }
 }
 
 void HalfSpaceKernels::convolve(const std::vector<double>& kernel, const std::vector<double>& in,
@@ -76,6 +110,24 @@ void HalfSpaceKernels::convolve(const std::vector<double>& kernel, const std::ve
 }
 
 std::vector<double> HalfSpaceKernels::normal(const std::vector<double>& p) const {
+  const int px = 2 * grid_.mx, py = 2 * grid_.my;
+  std::vector<std::complex<double>> padded(static_cast<std::size_t>(px) * py, 0.0);
+  for (int j = 0; j < grid_.my; ++j)
+    for (int i = 0; i < grid_.mx; ++i)
+      padded[static_cast<std::size_t>(j) * px + i] = p[static_cast<std::size_t>(j) * grid_.mx + i];
+  fft2(padded, false);
+  for (std::size_t k = 0; k < padded.size(); ++k)
+    padded[k] *= zz_spectrum_[k];
+  fft2(padded, true);
+  std::vector<double> u(p.size());
+  for (int j = 0; j < grid_.my; ++j)
+    for (int i = 0; i < grid_.mx; ++i)
+      u[static_cast<std::size_t>(j) * grid_.mx + i] =
+          padded[static_cast<std::size_t>(j) * px + i].real();
+  return u;
+}
+
+std::vector<double> HalfSpaceKernels::normal_direct(const std::vector<double>& p) const {
   std::vector<double> u;
   convolve(zz_, p, u, false);
   return u;

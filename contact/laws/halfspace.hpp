@@ -7,6 +7,7 @@
 /// give the displacement difference of the two surfaces. Johnson, Contact Mechanics (1985),
 /// §3.2 and §3.3; Kalker (1990), §4.
 
+#include <complex>
 #include <vector>
 
 namespace railfe {
@@ -30,8 +31,11 @@ class HalfSpaceKernels {
  public:
   /// Kernels for \p grid, combined shear modulus \p G and Poisson's ratio \p nu of both bodies.
   HalfSpaceKernels(const ContactGrid& grid, double G, double nu);
-  /// Normal displacement difference (m) of the pressures \p p (Pa), element-wise.
+  /// Normal displacement difference (m) of the pressures \p p (Pa), element-wise: a
+  /// convolution, evaluated by FFT on the grid padded to twice its size.
   std::vector<double> normal(const std::vector<double>& p) const;
+  /// The same by direct summation (for checking the FFT).
+  std::vector<double> normal_direct(const std::vector<double>& p) const;
   /// Tangential displacement differences (m) of the shear tractions \p px, \p py (Pa).
   void tangential(const std::vector<double>& px, const std::vector<double>& py,
                   std::vector<double>& ux, std::vector<double>& uy) const;
@@ -58,6 +62,8 @@ class HalfSpaceKernels {
   ContactGrid grid_;
   int wx_, wy_;  // kernel widths 2 mx - 1, 2 my - 1
   std::vector<double> zz_, xx_, yy_, xy_;
+  std::vector<std::complex<double>> zz_spectrum_;  // FFT of the padded, wrapped normal kernel
+  void fft2(std::vector<std::complex<double>>& data, bool inverse) const;
   void convolve(const std::vector<double>& kernel, const std::vector<double>& in,
                 std::vector<double>& out, bool accumulate) const;
 };

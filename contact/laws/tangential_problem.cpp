@@ -84,14 +84,18 @@ TangentialSolution solve_tangential(const HalfSpaceKernels& kernels,
       if (bound <= 0) {
         qx = qy = 0;
       } else if (std::hypot(qx, qy) > bound) {
-        double lo = 0, hi = std::max(self_xx, self_yy);
-        while (std::hypot(rx / (self_xx + hi), ry / (self_yy + hi)) > bound)
-          hi *= 2;
-        for (int k = 0; k < 100 && hi - lo > 1e-15 * hi; ++k) {
-          const double mid = 0.5 * (lo + hi);
-          (std::hypot(rx / (self_xx + mid), ry / (self_yy + mid)) > bound ? lo : hi) = mid;
+        // |q(λ)|² - bound² is convex and falls with λ: Newton from λ = 0 climbs to the root
+        // without overshooting.
+        double lambda = 0;
+        for (int k = 0; k < 50; ++k) {
+          const double ax = rx / (self_xx + lambda), ay = ry / (self_yy + lambda);
+          const double f = ax * ax + ay * ay - bound * bound;
+          const double df = -2 * (ax * ax / (self_xx + lambda) + ay * ay / (self_yy + lambda));
+          const double step = -f / df;
+          lambda += step;
+          if (step <= 1e-14 * lambda)
+            break;
         }
-        const double lambda = 0.5 * (lo + hi);
         qx = -rx / (self_xx + lambda);
         qy = -ry / (self_yy + lambda);
       }
