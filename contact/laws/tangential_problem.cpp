@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace railfe {
@@ -63,6 +64,18 @@ TangentialSolution solve_tangential(const HalfSpaceKernels& kernels,
   // matrix, so |q| <= μp and slip opposes traction), reading the target from the displacement
   // its neighbour ahead has just received.
   std::vector<double> ux(n, 0.0), uy(n, 0.0);
+  if (settings.start_in_full_slip) {
+    for (int e : contact) {
+      const double wx = creep.longitudinal - creep.spin * g.y(e / mx);
+      const double wy = creep.lateral + creep.spin * g.x(e % mx);
+      const double w = std::hypot(wx, wy);
+      if (w > 0) {
+        t.qx[e] = -friction.static_coefficient * pressure[e] * wx / w;
+        t.qy[e] = -friction.static_coefficient * pressure[e] * wy / w;
+      }
+    }
+    kernels.tangential(t.qx, t.qy, ux, uy);
+  }
   std::vector<int> order = contact;
   std::sort(order.begin(), order.end(),
             [&](int a, int b) { return a / mx != b / mx ? a / mx < b / mx : a % mx > b % mx; });
@@ -143,6 +156,37 @@ TangentialSolution solve_tangential(const HalfSpaceKernels& kernels,
   if (!t.converged)  // no number that could be mistaken for a result
     t.forces = {std::nan(""), std::nan(""), std::nan("")};
   return t;
+}
+
+TangentialSolution solve_steady_rolling(const HalfSpaceKernels& kernels,
+                                        const std::vector<double>& pressure, const Creepages& creep,
+                                        const FrictionLaw& friction, double spread,
+                                        double* spread_found, const TangentialSettings& settings) {
+  TangentialSolution first = solve_tangential(kernels, pressure, creep, friction, settings);
+  if (spread_found)
+    *spread_found = 0;
+  const bool falling =
+      friction.dynamic_coefficient < friction.static_coefficient && friction.decay > 0;
+  if (!falling || !first.converged)
+    return first;
+  TangentialSettings other = settings;
+  other.start_in_full_slip = !settings.start_in_full_slip;
+  const TangentialSolution second = solve_tangential(kernels, pressure, creep, friction, other);
+  const ContactGrid& g = kernels.grid();
+  double load = 0;
+  for (double p : pressure)
+    load += p * g.dx * g.dy;
+  const double apart = second.converged ? std::hypot(first.forces.Fx - second.forces.Fx,
+                                                     first.forces.Fy - second.forces.Fy) /
+                                              (friction.static_coefficient * load)
+                                        : std::numeric_limits<double>::infinity();
+  if (spread_found)
+    *spread_found = apart;
+  if (apart > spread) {
+    first.converged = false;
+    first.forces = {std::nan(""), std::nan(""), std::nan("")};
+  }
+  return first;
 }
 
 }  // namespace railfe

@@ -30,6 +30,9 @@ struct FrictionLaw {
 struct TangentialSettings {
   int max_sweeps = 1000;     ///< Gauss–Seidel sweeps before giving up
   double tolerance = 1e-10;  ///< on the largest traction change, relative to μs max p
+  /// Start from full slip (μs p against the rigid slip) instead of no traction: with falling
+  /// friction two starts that end apart show the solution is not unique.
+  bool start_in_full_slip = false;
 };
 
 /// A tangential solution.
@@ -42,6 +45,16 @@ struct TangentialSolution {
   bool converged = false;        ///< the tractions settled
   double adhesion_fraction = 0;  ///< of the contact area
 };
+
+/// Steady rolling with a uniqueness check: with falling friction (μd < μs and c > 0) the problem
+/// is solved from no traction and from full slip; where the two settle apart by more than
+/// \p spread × μs N, the steady state is not unique and the result says so (converged false,
+/// forces NaN, \p spread_found set). Coulomb friction is solved once.
+TangentialSolution solve_steady_rolling(const HalfSpaceKernels& kernels,
+                                        const std::vector<double>& pressure, const Creepages& creep,
+                                        const FrictionLaw& friction, double spread = 1e-6,
+                                        double* spread_found = nullptr,
+                                        const TangentialSettings& settings = {});
 
 /// Tangential tractions for pressures \p pressure (Pa per element of \p kernels' grid),
 /// creepages \p creep and friction \p friction.
