@@ -2,6 +2,7 @@
 // folder under physics/ and one line here.
 #include "framework/app/registry.hpp"
 #include "physics/contact_geometry/wheelset_on_track_module.hpp"
+#include "physics/contact_patch/contact_patch_module.hpp"
 #include "physics/explicit/explicit_module.hpp"
 #include "physics/materials/elastic_material.hpp"
 #include "physics/modal/modal_module.hpp"
@@ -17,6 +18,7 @@ void register_physics(ModuleRegistry& registry) {
   registry.add_module(modal_module());
   registry.add_module(explicit_module());
   registry.add_module(wheelset_on_track_module());
+  registry.add_module(contact_patch_module());
   registry.add_mesh_generator(wheel_mesh_generator());
 }
 

@@ -1,0 +1,71 @@
+#include "physics/contact_patch/contact_patch_module.hpp"
+
+#include "physics/contact_patch/contact_patch_step.hpp"
+
+namespace railfe {
+
+namespace {
+
+ParameterSpec contact_patch_parameters() {
+  ParameterSpec spec(
+      "One contact patch under several theories: forces, moment, pressure, patch and tractions.");
+  spec.choice("Geometry", "curvatures",
+              {{"curvatures", "Hertz from the relative curvatures A and B"},
+               {"semi-axes", "Hertz from the semi-axes a and b (the curvatures follow)"}},
+              "How the patch is given.");
+  spec.real("A", 1 / (2 * 0.46), "Relative curvature along the rolling direction.", "1/m",
+            Range::positive());
+  spec.real("B", 1 / (2 * 0.30), "Relative curvature across.", "1/m", Range::positive());
+  spec.real("a", 7e-3, "Semi-axis along the rolling direction (Geometry semi-axes).", "m",
+            Range::positive());
+  spec.real("b", 5e-3, "Semi-axis across (Geometry semi-axes).", "m", Range::positive());
+  spec.real("Normal load", 1e5, "Normal force.", "N", Range::positive());
+  spec.real("Young's modulus", 210e9, "Of both bodies.", "Pa", Range::positive());
+  spec.real("Poisson's ratio", 0.3, "Of both bodies (Kalker's table covers 0 to 0.5).", "",
+            Range::closed(0.0, 0.5));
+  spec.real_array("Longitudinal creepage", {1e-3},
+                  "ξ per case; arrays of length 1 are repeated to the longest.", "", 0);
+  spec.real_array("Lateral creepage", {0}, "η per case.", "", 0);
+  spec.real_array("Spin creepage", {0}, "φ per case.", "1/m", 0);
+  spec.real("Static friction", 0.3, "μs (Coulomb: also μd).", "", Range::non_negative());
+  spec.real("Dynamic friction", -1, "μd for falling friction (negative = μs: Coulomb).", "");
+  spec.real("Friction decay", 0, "c in μ = μd + (μs − μd) exp(−c |v|).", "s/m",
+            Range::non_negative());
+  spec.real("Rolling speed", 30, "Turns slip into slip velocity (falling friction).", "m/s",
+            Range::positive());
+  spec.text_array("Theories", {"linear", "shen-hedrick-elkins", "fastsim", "exact"},
+                  "Any of linear, shen-hedrick-elkins, fastsim, exact.");
+  spec.integer("FASTSIM cells", 20, "FASTSIM cells along each strip, and strips.",
+               Range::at_least(1));
+  spec.choice("FASTSIM bound", "parabolic",
+              {{"parabolic", "Kalker's parabolic traction bound"},
+               {"elliptic", "Hertz's elliptic pressure"}},
+              "FASTSIM's traction bound.");
+  spec.integer("Exact grid", 40,
+               "Elements per side of the exact solver's grid, which reaches 10 % beyond the "
+               "Hertz ellipse.",
+               Range::at_least(8));
+  spec.flag("Traction fields", true,
+            "Write patch_tractions.csv: per FASTSIM and exact case, every element's position, "
+            "pressure, tractions and state.");
+  spec.flag("Chart", true,
+            "Draw patch_creep_forces.png and patch_tractions.png (needs python3 with "
+            "matplotlib).");
+  return spec;
+}
+
+}  // namespace
+
+ModuleDescriptor contact_patch_module() {
+  ModuleDescriptor module;
+  module.name = "contact patch";
+  module.summary = "one wheel-rail contact patch under Hertz, Kalker linear, FASTSIM and exact";
+  module.parameters = contact_patch_parameters;
+  module.create = [](const Teuchos::ParameterList& parameters) {
+    return std::make_unique<ContactPatchStep>(parameters);
+  };
+  module.needs_mesh = false;
+  return module;
+}
+
+}  // namespace railfe

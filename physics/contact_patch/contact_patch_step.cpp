@@ -1,0 +1,220 @@
+#include "physics/contact_patch/contact_patch_step.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include "contact/laws/fastsim.hpp"
+#include "contact/laws/hertz.hpp"
+#include "contact/laws/normal_problem.hpp"
+#include "contact/laws/saturation.hpp"
+#include "contact/laws/tangential_problem.hpp"
+#include "framework/base/error.hpp"
+#include "framework/output/csv_writer.hpp"
+#include "physics/common/chart_script.hpp"
+
+namespace railfe {
+
+namespace {
+
+const std::vector<std::string> kTheories = {"linear", "shen-hedrick-elkins", "fastsim", "exact"};
+
+// Seconds per call of \p f, repeated until a millisecond has passed (cheap theories).
+template <class F>
+double seconds_per_call(F&& f) {
+  const auto start = std::chrono::steady_clock::now();
+  int calls = 0;
+  double elapsed = 0;
+  do {
+    f();
+    ++calls;
+    elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  } while (elapsed < 1e-3 && calls < 1000000);
+  return elapsed / calls;
+}
+
+}  // namespace
+
+ContactPatchStep::ContactPatchStep(const Teuchos::ParameterList& parameters)
+    : parameters_(&parameters) {}
+
+void ContactPatchStep::check(const CheckContext& context) {
+  const std::string& source = context.source();
+  theories_.clear();
+  for (const auto& name : parameters_->get<Teuchos::Array<std::string>>("Theories")) {
+    if (std::find(kTheories.begin(), kTheories.end(), name) == kTheories.end())
+      throw_input_error(source, context.path + "/Theories", "unknown theory '" + name + "'",
+                        "linear, shen-hedrick-elkins, fastsim, exact");
+    theories_.push_back(name);
+  }
+  const char* keys[3] = {"Longitudinal creepage", "Lateral creepage", "Spin creepage"};
+  std::size_t count = 1;
+  for (const char* key : keys)
+    count = std::max<std::size_t>(count, parameters_->get<Teuchos::Array<double>>(key).size());
+  cases_.assign(count, {});
+  for (int k = 0; k < 3; ++k) {
+    const auto& values = parameters_->get<Teuchos::Array<double>>(keys[k]);
+    if (values.size() != 1 && values.size() != count)
+      throw_input_error(
+          source, context.path + "/" + keys[k],
+          "has " + std::to_string(values.size()) + " values, others " + std::to_string(count),
+          "1 value or as many as the longest creepage array");
+    for (std::size_t c = 0; c < count; ++c) {
+      const double v = values.size() == 1 ? values[0] : values[c];
+      (k == 0 ? cases_[c].longitudinal : k == 1 ? cases_[c].lateral : cases_[c].spin) = v;
+    }
+  }
+  const double mu_s = parameters_->get<double>("Static friction");
+  const double mu_d = parameters_->get<double>("Dynamic friction");
+  if (mu_d > mu_s)
+    throw_input_error(source, context.path + "/Dynamic friction", "exceeds the static friction",
+                      "0 to Static friction, or negative (Coulomb)");
+  if (parameters_->get<std::string>("Geometry") == "semi-axes") {
+    const double ratio = parameters_->get<double>("a") / parameters_->get<double>("b");
+    if (ratio < 0.1 || ratio > 10)
+      throw_input_error(source, context.path + "/a", "a / b outside Kalker's table",
+                        "a / b from 0.1 to 10");
+  }
+}
+
+void ContactPatchStep::run(StepContext& context) {
+  const Teuchos::ParameterList& p = *parameters_;
+  const double E = p.get<double>("Young's modulus"), nu = p.get<double>("Poisson's ratio");
+  const double G = E / (2 * (1 + nu)), modulus = contact_modulus({E, nu}, {E, nu});
+  const double load = p.get<double>("Normal load");
+  const HertzContact h =
+      p.get<std::string>("Geometry") == "curvatures"
+          ? hertz_contact(p.get<double>("A"), p.get<double>("B"), modulus, load)
+          : hertz_from_semi_axes(p.get<double>("a"), p.get<double>("b"), modulus, load);
+  if (h.a / h.b < 0.1 || h.a / h.b > 10)
+    throw RunError(context.path + ": the Hertz ellipse's a / b = " + std::to_string(h.a / h.b) +
+                   " lies outside Kalker's table (0.1 to 10)");
+  const KalkerCoefficients c = KalkerTable::shipped().at(h.a, h.b, nu);
+  FrictionLaw friction;
+  friction.static_coefficient = p.get<double>("Static friction");
+  const double mu_d = p.get<double>("Dynamic friction");
+  friction.dynamic_coefficient = mu_d < 0 ? friction.static_coefficient : mu_d;
+  friction.decay = p.get<double>("Friction decay");
+  friction.rolling_speed = p.get<double>("Rolling speed");
+  FastsimSettings fastsim_grid;
+  fastsim_grid.cells_x = fastsim_grid.strips = p.get<int>("FASTSIM cells");
+  fastsim_grid.bound = p.get<std::string>("FASTSIM bound") == "elliptic" ? TractionBound::elliptic
+                                                                         : TractionBound::parabolic;
+
+  // The exact solver's grid and normal solution serve every case.
+  const bool exact = std::find(theories_.begin(), theories_.end(), "exact") != theories_.end();
+  std::unique_ptr<HalfSpaceKernels> kernels;
+  NormalSolution normal;
+  double normal_seconds = 0;
+  if (exact) {
+    const int m = p.get<int>("Exact grid");
+    const ContactGrid grid{-1.1 * h.a, -1.1 * h.b, 2.2 * h.a / m, 2.2 * h.b / m, m, m};
+    const auto start = std::chrono::steady_clock::now();
+    kernels = std::make_unique<HalfSpaceKernels>(grid, G, nu);
+    std::vector<double> separation(grid.size());
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m; ++i)
+        separation[j * m + i] = h.A * grid.x(i) * grid.x(i) + h.B * grid.y(j) * grid.y(j);
+    normal = solve_normal(*kernels, separation, load);
+    normal_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!normal.converged)
+      throw RunError(context.path + ": the exact solver's normal problem did not converge");
+  }
+
+  const bool root = context.model.comm().is_root();
+  CsvWriter forces(context.output.staging_path("patch_forces.csv"),
+                   {"theory", "case", "xi", "eta", "phi_per_m", "FN_N", "Fx_N", "Fy_N", "Mz_Nm",
+                    "a_m", "b_m", "pmax_Pa", "adhesion_fraction", "status", "time_s"},
+                   root);
+  const bool fields = p.get<bool>("Traction fields");
+  std::unique_ptr<CsvWriter> tractions;
+  if (fields)
+    tractions = std::make_unique<CsvWriter>(
+        context.output.staging_path("patch_tractions.csv"),
+        std::vector<std::string>{"theory", "case", "x_m", "y_m", "p_Pa", "qx_Pa", "qy_Pa", "state"},
+        root);
+  auto field = [&](const std::string& theory, std::size_t k, double x, double y, double pressure,
+                   double qx, double qy, bool adhesion) {
+    if (tractions)
+      tractions->write_row({theory, std::to_string(k), CsvWriter::format(x), CsvWriter::format(y),
+                            CsvWriter::format(pressure), CsvWriter::format(qx),
+                            CsvWriter::format(qy), adhesion ? "adhesion" : "slip"});
+  };
+  int refused = 0;
+  auto progress = context.progress("cases", static_cast<double>(cases_.size()));
+  for (std::size_t k = 0; k < cases_.size(); ++k) {
+    const Creepages& creep = cases_[k];
+    for (const std::string& theory : theories_) {
+      CreepForces f;
+      double seconds = 0, adhesion = std::nan(""), pmax = h.pressure;
+      std::string status = "ok";
+      if (theory == "linear") {
+        seconds = seconds_per_call([&] { f = kalker_linear(c, G, h.a, h.b, creep); });
+      } else if (theory == "shen-hedrick-elkins") {
+        seconds = seconds_per_call([&] {
+          f = shen_hedrick_elkins(kalker_linear(c, G, h.a, h.b, creep), load,
+                                  friction.static_coefficient);
+        });
+      } else if (theory == "fastsim") {
+        FastsimResult r;
+        seconds = seconds_per_call([&] {
+          r = fastsim(c, G, h.a, h.b, load, friction.static_coefficient, creep, fastsim_grid);
+        });
+        f = r.forces;
+        adhesion = r.adhesion_fraction;
+        for (std::size_t e = 0; e < r.x.size(); ++e)
+          field(theory, k, r.x[e], r.y[e],
+                r.bound[e] / std::max(friction.static_coefficient, 1e-300), r.px[e], r.py[e],
+                r.adhesion[e]);
+      } else {
+        const auto start = std::chrono::steady_clock::now();
+        const TangentialSolution t =
+            solve_steady_rolling(*kernels, normal.pressure, creep, friction);
+        seconds = normal_seconds +
+                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        f = t.forces;
+        adhesion = t.adhesion_fraction;
+        pmax = normal.max_pressure;
+        if (!t.converged) {
+          status = "not unique or not converged";
+          ++refused;
+        }
+        const ContactGrid& g = kernels->grid();
+        for (int e = 0; e < g.size(); ++e)
+          if (normal.pressure[e] > 0)
+            field(theory, k, g.x(e % g.mx), g.y(e / g.mx), normal.pressure[e], t.qx[e], t.qy[e],
+                  t.adhesion[e]);
+      }
+      forces.write_row({theory, std::to_string(k), CsvWriter::format(creep.longitudinal),
+                        CsvWriter::format(creep.lateral), CsvWriter::format(creep.spin),
+                        CsvWriter::format(load), CsvWriter::format(f.Fx), CsvWriter::format(f.Fy),
+                        CsvWriter::format(f.Mz), CsvWriter::format(h.a), CsvWriter::format(h.b),
+                        CsvWriter::format(pmax), CsvWriter::format(adhesion), status,
+                        CsvWriter::format(seconds)});
+    }
+    progress.update(static_cast<double>(k + 1));
+  }
+  progress.finish();
+  forces.flush();
+  if (tractions)
+    tractions->flush();
+  const std::string section = "Step " + context.step_name + " (contact patch)";
+  context.summary.add(section, "Hertz a", h.a, "m");
+  context.summary.add(section, "Hertz b", h.b, "m");
+  context.summary.add(section, "Hertz maximum pressure", h.pressure, "Pa");
+  context.summary.add(section, "Hertz approach", h.approach, "m");
+  context.summary.add(section, "cases", static_cast<double>(cases_.size()));
+  if (exact)
+    context.summary.add(section, "exact cases without a unique steady state", refused);
+  if (p.get<bool>("Chart"))
+    draw_chart(context, section, "contact_patch_chart.py",
+               {context.output.staging_path("patch_forces.csv"),
+                fields ? context.output.staging_path("patch_tractions.csv") : std::string("-"),
+                context.output.staging_path("patch_creep_forces.png"),
+                context.output.staging_path("patch_tractions.png")});
+}
+
+}  // namespace railfe

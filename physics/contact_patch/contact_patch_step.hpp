@@ -1,0 +1,29 @@
+#pragma once
+/// \file
+/// One "contact patch" step (see contact_patch_module.hpp).
+
+#include <string>
+#include <vector>
+
+#include "contact/laws/kalker_linear.hpp"
+#include "framework/app/module.hpp"
+
+namespace railfe {
+
+/// Contact patch under several theories.
+class ContactPatchStep : public AnalysisStep {
+ public:
+  /// Keeps the step's validated parameters.
+  explicit ContactPatchStep(const Teuchos::ParameterList& parameters);
+  /// Checks the theory names, the creepage arrays and that Hertz and Kalker's table apply.
+  void check(const CheckContext& context) override;
+  /// Evaluates every case under every theory and writes the files.
+  void run(StepContext& context) override;
+
+ private:
+  const Teuchos::ParameterList* parameters_;
+  std::vector<std::string> theories_;
+  std::vector<Creepages> cases_;
+};
+
+}  // namespace railfe
