@@ -42,8 +42,8 @@ ParameterSpec contact_patch_parameters() {
                {"elliptic", "Hertz's elliptic pressure"}},
               "FASTSIM's traction bound.");
   spec.integer("Exact grid", 40,
-               "Elements per side of the exact solver's grid, which reaches 10 % beyond the "
-               "Hertz ellipse.",
+               "Elements per side of the exact solver's grid, which reaches 10 % (and at least "
+               "1.5 elements) beyond the Hertz ellipse.",
                Range::at_least(8));
   spec.flag("Traction fields", true,
             "Write patch_tractions.csv: per FASTSIM and exact case, every element's position, "

@@ -110,7 +110,11 @@ void ContactPatchStep::run(StepContext& context) {
   double normal_seconds = 0;
   if (exact) {
     const int m = p.get<int>("Exact grid");
-    const ContactGrid grid{-1.1 * h.a, -1.1 * h.b, 2.2 * h.a / m, 2.2 * h.b / m, m, m};
+    // 10 % beyond the ellipse, and at least 1.5 elements, so the contact never reaches the
+    // grid's edge (the tangential problem needs a free element ahead of the leading edge).
+    const double reach = std::max(1.1, 1 / (1 - 3.0 / m));
+    const ContactGrid grid{
+        -reach * h.a, -reach * h.b, 2 * reach * h.a / m, 2 * reach * h.b / m, m, m};
     const auto start = std::chrono::steady_clock::now();
     kernels = std::make_unique<HalfSpaceKernels>(grid, G, nu);
     std::vector<double> separation(grid.size());
@@ -171,8 +175,13 @@ void ContactPatchStep::run(StepContext& context) {
                 r.adhesion[e]);
       } else {
         const auto start = std::chrono::steady_clock::now();
-        const TangentialSolution t =
-            solve_steady_rolling(*kernels, normal.pressure, creep, friction);
+        TangentialSolution t;
+        try {
+          t = solve_steady_rolling(*kernels, normal.pressure, creep, friction);
+        } catch (const std::invalid_argument& e) {
+          throw_input_error(context.source(), context.path + "/Exact grid", e.what(),
+                            "more elements");
+        }
         seconds = normal_seconds +
                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         f = t.forces;
