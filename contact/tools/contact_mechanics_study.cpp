@@ -1,12 +1,15 @@
 // railfe-contact-mechanics: contact-mechanics studies that need many solves, kept out of the
 // unit tests. "falling-friction OUT.csv" maps where the exact steady-rolling solver finds more
 // than one steady state as friction falls with slip velocity (Hertz patch of the issue's
-// wheel on a crown, 20 x 20 grid, ξ = 2e-3, V = 30 m/s, μs = 0.4).
+// wheel on a crown, 20 x 20 grid, ξ = 2e-3, V = 30 m/s, μs = 0.4). "creep-table OUT.csv" builds
+// the creep-force table shipped as inputs/kalker/creep_table_nu030.csv (exact solver at 30 x 30,
+// about a minute).
 #include <cmath>
 #include <fstream>
 #include <iostream>
 #include <string>
 
+#include "contact/laws/creep_table.hpp"
 #include "contact/laws/hertz.hpp"
 #include "contact/laws/normal_problem.hpp"
 #include "contact/laws/tangential_problem.hpp"
@@ -47,17 +50,34 @@ int falling_friction(const std::string& out) {
   return 0;
 }
 
+void report(int done, int total) {
+  if (done % 200 == 0 || done == total)
+    std::cerr << "creep table: " << done << " / " << total << " nodes\n";
+}
+
+int creep_table(const std::string& out) {
+  CreepTableAxes axes;
+  axes.ratios = {0.2, 1.0 / 3, 0.5, 0.75, 1.0, 4.0 / 3, 2, 3, 5};
+  for (int k = -4; k <= 4; ++k)
+    axes.t.push_back(0.2 * k);
+  axes.poisson = 0.3;
+  axes.grid = 30;
+  CreepTable::build(axes, out, report);
+  std::cout << "wrote " << out << '\n';
+  return 0;
+}
+
 }  // namespace
 }  // namespace railfe
 
 int main(int argc, char** argv) {
   const std::string mode = argc > 1 ? argv[1] : "";
-  if (argc != 3 || mode != "falling-friction") {
-    std::cerr << "usage: railfe-contact-mechanics falling-friction OUT.csv\n";
+  if (argc != 3 || (mode != "falling-friction" && mode != "creep-table")) {
+    std::cerr << "usage: railfe-contact-mechanics falling-friction|creep-table OUT.csv\n";
     return 2;
   }
   try {
-    return railfe::falling_friction(argv[2]);
+    return mode == "creep-table" ? railfe::creep_table(argv[2]) : railfe::falling_friction(argv[2]);
   } catch (const std::exception& e) {
     std::cerr << e.what() << '\n';
     return 1;

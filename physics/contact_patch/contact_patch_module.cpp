@@ -34,7 +34,8 @@ ParameterSpec contact_patch_parameters() {
   spec.real("Rolling speed", 30, "Turns slip into slip velocity (falling friction).", "m/s",
             Range::positive());
   spec.text_array("Theories", {"linear", "shen-hedrick-elkins", "fastsim", "exact"},
-                  "Any of linear, shen-hedrick-elkins, fastsim, exact.");
+                  "Any of linear, shen-hedrick-elkins, fastsim, table (the exact solver's "
+                  "creep-force table: a/b 0.2 to 5, Poisson's ratio 0.3), exact.");
   spec.integer("FASTSIM cells", 20, "FASTSIM cells along each strip, and strips.",
                Range::at_least(1));
   spec.choice("FASTSIM bound", "parabolic",

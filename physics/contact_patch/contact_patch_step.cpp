@@ -6,6 +6,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "contact/laws/creep_table.hpp"
 #include "contact/laws/fastsim.hpp"
 #include "contact/laws/hertz.hpp"
 #include "contact/laws/normal_problem.hpp"
@@ -19,7 +20,8 @@ namespace railfe {
 
 namespace {
 
-const std::vector<std::string> kTheories = {"linear", "shen-hedrick-elkins", "fastsim", "exact"};
+const std::vector<std::string> kTheories = {"linear", "shen-hedrick-elkins", "fastsim", "table",
+                                            "exact"};
 
 // Seconds per call of \p f, repeated until a millisecond has passed (cheap theories).
 template <class F>
@@ -46,7 +48,7 @@ void ContactPatchStep::check(const CheckContext& context) {
   for (const auto& name : parameters_->get<Teuchos::Array<std::string>>("Theories")) {
     if (std::find(kTheories.begin(), kTheories.end(), name) == kTheories.end())
       throw_input_error(source, context.path + "/Theories", "unknown theory '" + name + "'",
-                        "linear, shen-hedrick-elkins, fastsim, exact");
+                        "linear, shen-hedrick-elkins, fastsim, table, exact");
     theories_.push_back(name);
   }
   const char* keys[3] = {"Longitudinal creepage", "Lateral creepage", "Spin creepage"};
@@ -162,6 +164,15 @@ void ContactPatchStep::run(StepContext& context) {
           f = shen_hedrick_elkins(kalker_linear(c, G, h.a, h.b, creep), load,
                                   friction.static_coefficient);
         });
+      } else if (theory == "table") {
+        try {
+          const CreepTable& table = CreepTable::shipped();  // read once, outside the timing
+          seconds = seconds_per_call(
+              [&] { f = table.forces(h.a, h.b, G, nu, load, friction.static_coefficient, creep); });
+        } catch (const std::invalid_argument& e) {
+          throw RunError(context.path + ": creep table: " + e.what() +
+                         " (the shipped table covers a/b 0.2 to 5 at Poisson's ratio 0.3)");
+        }
       } else if (theory == "fastsim") {
         FastsimResult r;
         seconds = seconds_per_call([&] {
