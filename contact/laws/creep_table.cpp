@@ -50,14 +50,9 @@ void CreepTable::build(const CreepTableAxes& axes, const std::string& path,
   for (double ratio : axes.ratios) {
     const double b = a / ratio;
     const HertzContact h = hertz_from_semi_axes(a, b, contact_modulus({E, nu}, {E, nu}), load);
-    const double reach = std::max(1.1, 1 / (1 - 3.0 / m));
-    const ContactGrid grid{-reach * a, -reach * b, 2 * reach * a / m, 2 * reach * b / m, m, m};
-    const HalfSpaceKernels kernels(grid, G, nu);
-    std::vector<double> separation(grid.size());
-    for (int j = 0; j < m; ++j)
-      for (int i = 0; i < m; ++i)
-        separation[j * m + i] = h.A * grid.x(i) * grid.x(i) + h.B * grid.y(j) * grid.y(j);
-    const NormalSolution normal = solve_normal(kernels, separation, load);
+    const HertzPatch patch = solve_hertz_patch(h, G, nu, m);
+    const HalfSpaceKernels& kernels = *patch.kernels;
+    const NormalSolution& normal = patch.normal;
     FrictionLaw friction;
     friction.static_coefficient = friction.dynamic_coefficient = mu;
     const double unit = mu * h.pressure / G;
@@ -157,7 +152,6 @@ CreepForces CreepTable::forces(double a, double b, double G, double nu, double l
   if (std::abs(nu - axes_.poisson) > 1e-6)
     throw std::invalid_argument("the creep table was made for another Poisson's ratio");
   const double p0 = 3 * load / (2 * M_PI * a * b), unit = G / (friction * p0);
-  auto t = [](double s) { return s / (1 + std::abs(s)); };
   const auto [r, wr] = locate(log_ratios_, std::log(ratio));
   // Cubic (Catmull-Rom) weights along each creepage axis, over the nodes i-1 .. i+2 (ends
   // repeated): the creep curve bends too much between nodes for linear weights.

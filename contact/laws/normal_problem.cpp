@@ -91,4 +91,18 @@ NormalSolution solve_normal(const HalfSpaceKernels& kernels, const std::vector<d
   return s;
 }
 
+HertzPatch solve_hertz_patch(const HertzContact& hertz, double G, double nu, int m) {
+  const double reach = std::max(1.1, 1 / (1 - 3.0 / m));
+  const ContactGrid grid{
+      -reach * hertz.a, -reach * hertz.b, 2 * reach * hertz.a / m, 2 * reach * hertz.b / m, m, m};
+  HertzPatch patch;
+  patch.kernels = std::make_unique<HalfSpaceKernels>(grid, G, nu);
+  std::vector<double> separation(grid.size());
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < m; ++i)
+      separation[j * m + i] = hertz.A * grid.x(i) * grid.x(i) + hertz.B * grid.y(j) * grid.y(j);
+  patch.normal = solve_normal(*patch.kernels, separation, hertz.load);
+  return patch;
+}
+
 }  // namespace railfe

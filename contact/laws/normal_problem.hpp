@@ -6,9 +6,11 @@
 /// an active-set method that moves elements in and out of contact, so any separation h works,
 /// elliptic or not (two-point contact, conformal patches).
 
+#include <memory>
 #include <vector>
 
 #include "contact/laws/halfspace.hpp"
+#include "contact/laws/hertz.hpp"
 
 namespace railfe {
 
@@ -27,5 +29,16 @@ struct NormalSolution {
 /// one value per element of \p kernels' grid; zero where the bodies first touch).
 NormalSolution solve_normal(const HalfSpaceKernels& kernels, const std::vector<double>& separation,
                             double load, double tolerance = 1e-12, int max_iterations = 2000);
+
+/// A Hertzian patch on the grid the exact solver uses: its kernels and normal solution.
+struct HertzPatch {
+  std::unique_ptr<HalfSpaceKernels> kernels;  ///< grid and influence coefficients
+  NormalSolution normal;                      ///< pressures under the Hertz load
+};
+
+/// The normal problem of the separation A x² + B y² of \p hertz under its load, on an \p m × \p m
+/// grid reaching 10 % (and at least 1.5 elements) beyond the Hertz ellipse, so that the contact
+/// never reaches the grid's edge; both bodies of shear modulus \p G and Poisson's ratio \p nu.
+HertzPatch solve_hertz_patch(const HertzContact& hertz, double G, double nu, int m);
 
 }  // namespace railfe

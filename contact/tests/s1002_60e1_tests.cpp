@@ -67,8 +67,9 @@ TEST(S1002On60E1, FlangeContactFromAboutSixMillimetresOnBothSides) {
                 1e-9);
   // On the flange the contact angle is steep.
   for (const auto& row : table.rows())
-    if (row.lateral >= right)
+    if (row.lateral >= right) {
       EXPECT_GT(row.active(TrackSide::right).contact_angle, 30 * M_PI / 180);
+    }
 }
 
 TEST(S1002On60E1, RollingRadiusDifferenceJumpsOnlyWhereTheContactPointJumps) {
@@ -206,8 +207,9 @@ TEST(MeasuredProfiles, WornWheelOnWornHighRailClosesOrSaysSo) {
                                    WheelsetLayout{});
   const ContactTable table(geometry, 0.015, 121);
   for (const auto& row : table.rows()) {
-    if (std::abs(row.lateral) <= 0.0085 + 1e-12)
+    if (std::abs(row.lateral) <= 0.0085 + 1e-12) {
       EXPECT_TRUE(row.converged) << "shift " << row.lateral;
+    }
     if (!row.converged)
       continue;
     const WheelsetPose pose{row.lateral, row.vertical, row.roll, 0};

@@ -58,7 +58,7 @@ void ContactPatchStep::check(const CheckContext& context) {
   cases_.assign(count, {});
   for (int k = 0; k < 3; ++k) {
     const auto& values = parameters_->get<Teuchos::Array<double>>(keys[k]);
-    if (values.size() != 1 && values.size() != count)
+    if (values.size() != 1 && static_cast<std::size_t>(values.size()) != count)
       throw_input_error(
           source, context.path + "/" + keys[k],
           "has " + std::to_string(values.size()) + " values, others " + std::to_string(count),
@@ -107,26 +107,14 @@ void ContactPatchStep::run(StepContext& context) {
 
   // The exact solver's grid and normal solution serve every case.
   const bool exact = std::find(theories_.begin(), theories_.end(), "exact") != theories_.end();
-  std::unique_ptr<HalfSpaceKernels> kernels;
-  NormalSolution normal;
+  HertzPatch patch;
   double normal_seconds = 0;
   if (exact) {
-    const int m = p.get<int>("Exact grid");
-    // 10 % beyond the ellipse, and at least 1.5 elements, so the contact never reaches the
-    // grid's edge (the tangential problem needs a free element ahead of the leading edge).
-    const double reach = std::max(1.1, 1 / (1 - 3.0 / m));
-    const ContactGrid grid{
-        -reach * h.a, -reach * h.b, 2 * reach * h.a / m, 2 * reach * h.b / m, m, m};
     const auto start = std::chrono::steady_clock::now();
-    kernels = std::make_unique<HalfSpaceKernels>(grid, G, nu);
-    std::vector<double> separation(grid.size());
-    for (int j = 0; j < m; ++j)
-      for (int i = 0; i < m; ++i)
-        separation[j * m + i] = h.A * grid.x(i) * grid.x(i) + h.B * grid.y(j) * grid.y(j);
-    normal = solve_normal(*kernels, separation, load);
+    patch = solve_hertz_patch(h, G, nu, p.get<int>("Exact grid"));
     normal_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (!normal.converged)
+    if (!patch.normal.converged)
       throw RunError(context.path + ": the exact solver's normal problem did not converge");
   }
 
@@ -188,7 +176,7 @@ void ContactPatchStep::run(StepContext& context) {
         const auto start = std::chrono::steady_clock::now();
         TangentialSolution t;
         try {
-          t = solve_steady_rolling(*kernels, normal.pressure, creep, friction);
+          t = solve_steady_rolling(*patch.kernels, patch.normal.pressure, creep, friction);
         } catch (const std::invalid_argument& e) {
           throw_input_error(context.source(), context.path + "/Exact grid", e.what(),
                             "more elements");
@@ -197,16 +185,16 @@ void ContactPatchStep::run(StepContext& context) {
                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         f = t.forces;
         adhesion = t.adhesion_fraction;
-        pmax = normal.max_pressure;
+        pmax = patch.normal.max_pressure;
         if (!t.converged) {
           status = "not unique or not converged";
           ++refused;
         }
-        const ContactGrid& g = kernels->grid();
+        const ContactGrid& g = patch.kernels->grid();
         for (int e = 0; e < g.size(); ++e)
-          if (normal.pressure[e] > 0)
-            field(theory, k, g.x(e % g.mx), g.y(e / g.mx), normal.pressure[e], t.qx[e], t.qy[e],
-                  t.adhesion[e]);
+          if (patch.normal.pressure[e] > 0)
+            field(theory, k, g.x(e % g.mx), g.y(e / g.mx), patch.normal.pressure[e], t.qx[e],
+                  t.qy[e], t.adhesion[e]);
       }
       forces.write_row({theory, std::to_string(k), CsvWriter::format(creep.longitudinal),
                         CsvWriter::format(creep.lateral), CsvWriter::format(creep.spin),
