@@ -16,7 +16,9 @@ FastsimResult fastsim(const KalkerCoefficients& c, double G, double a, double b,
   const double ab = a * b;
   FastsimResult r;
   const std::size_t n = static_cast<std::size_t>(settings.cells_x) * settings.strips;
-  r.x.reserve(n);
+  if (settings.fields)
+    for (auto* field : {&r.x, &r.y, &r.px, &r.py, &r.bound})
+      field->reserve(n);
   double adhesion_area = 0, area = 0;
   const double dy = 2 * b / settings.strips;
   for (int j = 0; j < settings.strips; ++j) {
@@ -49,12 +51,14 @@ FastsimResult fastsim(const KalkerCoefficients& c, double G, double a, double b,
       r.forces.Mz += (x * py - y * px) * cell;
       area += cell;
       adhesion_area += adheres ? cell : 0;
-      r.x.push_back(x);
-      r.y.push_back(y);
-      r.px.push_back(px);
-      r.py.push_back(py);
-      r.bound.push_back(limit);
-      r.adhesion.push_back(adheres);
+      if (settings.fields) {
+        r.x.push_back(x);
+        r.y.push_back(y);
+        r.px.push_back(px);
+        r.py.push_back(py);
+        r.bound.push_back(limit);
+        r.adhesion.push_back(adheres);
+      }
     }
   }
   r.adhesion_fraction = adhesion_area / area;

@@ -24,13 +24,14 @@ struct FastsimSettings {
   int cells_x = 20;                                ///< cells along each strip (rolling direction)
   int strips = 20;                                 ///< strips across the ellipse (lateral)
   TractionBound bound = TractionBound::parabolic;  ///< the traction bound's shape
+  bool fields = true;  ///< keep the per-cell fields (false: forces only, faster)
 };
 
 /// A FASTSIM solution.
 struct FastsimResult {
   CreepForces forces;  ///< total tangential forces and spin moment on body 1
-  /// Per cell (strip-major: strip j, cell i at index j * cells_x + i): centre x, y (m),
-  /// tractions px, py (Pa), the bound μ p (Pa), and whether it adheres.
+  /// Per cell (strip-major: strip j, cell i at index j * cells_x + i), when asked for: centre
+  /// x, y (m), tractions px, py (Pa), the bound μ p (Pa), and whether it adheres.
   std::vector<double> x, y, px, py, bound;
   std::vector<bool> adhesion;
   double adhesion_fraction = 0;  ///< share of the contact area in adhesion

@@ -74,5 +74,20 @@ TEST(Fastsim, GridConvergesAndTheAdhesionZoneLeads) {
   EXPECT_LT(previous_error, 0.01 * std::abs(reference));
 }
 
+TEST(Fastsim, ForcesAloneEqualTheFullSolution) {
+  const HertzContact h = patch();
+  const KalkerCoefficients c = KalkerTable::shipped().at(h.a, h.b, 0.3);
+  FastsimSettings lean;
+  lean.fields = false;
+  const Creepages creep{1e-3, -5e-4, 0.3};
+  const FastsimResult full = fastsim(c, kG, h.a, h.b, kLoad, kMu, creep);
+  const FastsimResult forces = fastsim(c, kG, h.a, h.b, kLoad, kMu, creep, lean);
+  EXPECT_EQ(forces.forces.Fx, full.forces.Fx);
+  EXPECT_EQ(forces.forces.Fy, full.forces.Fy);
+  EXPECT_EQ(forces.forces.Mz, full.forces.Mz);
+  EXPECT_EQ(forces.adhesion_fraction, full.adhesion_fraction);
+  EXPECT_TRUE(forces.px.empty());
+}
+
 }  // namespace
 }  // namespace railfe
