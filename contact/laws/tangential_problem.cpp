@@ -8,6 +8,8 @@
 namespace railfe {
 
 double FrictionLaw::at(double speed) const {
+  if (decay == 0 || dynamic_coefficient == static_coefficient)  // Coulomb: no exp per element
+    return static_coefficient;
   return dynamic_coefficient +
          (static_coefficient - dynamic_coefficient) * std::exp(-decay * std::abs(speed));
 }

@@ -16,6 +16,8 @@
 #include "contact/geometry/contact_table.hpp"
 #include "contact/geometry/profile_file.hpp"
 
+#include "contact/tools/study_main.hpp"
+
 namespace railfe {
 namespace {
 
@@ -164,17 +166,8 @@ int resolution(const std::string& out) {
 }  // namespace railfe
 
 int main(int argc, char** argv) {
-  const std::string mode = argc > 1 ? argv[1] : "";
-  if (argc != 3 || (mode != "stability" && mode != "benchmark" && mode != "resolution")) {
-    std::cerr << "usage: railfe-contact-geometry stability|benchmark|resolution OUT.csv\n";
-    return 2;
-  }
-  try {
-    if (mode == "resolution")
-      return railfe::resolution(argv[2]);
-    return mode == "stability" ? railfe::stability(argv[2]) : railfe::benchmark(argv[2]);
-  } catch (const std::exception& e) {
-    std::cerr << e.what() << '\n';
-    return 1;
-  }
+  return railfe::run_study(argc, argv, "railfe-contact-geometry",
+                           {{"stability", railfe::stability},
+                            {"benchmark", railfe::benchmark},
+                            {"resolution", railfe::resolution}});
 }

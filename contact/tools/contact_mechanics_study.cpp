@@ -14,6 +14,8 @@
 #include "contact/laws/normal_problem.hpp"
 #include "contact/laws/tangential_problem.hpp"
 
+#include "contact/tools/study_main.hpp"
+
 namespace railfe {
 namespace {
 
@@ -71,15 +73,7 @@ int creep_table(const std::string& out) {
 }  // namespace railfe
 
 int main(int argc, char** argv) {
-  const std::string mode = argc > 1 ? argv[1] : "";
-  if (argc != 3 || (mode != "falling-friction" && mode != "creep-table")) {
-    std::cerr << "usage: railfe-contact-mechanics falling-friction|creep-table OUT.csv\n";
-    return 2;
-  }
-  try {
-    return mode == "creep-table" ? railfe::creep_table(argv[2]) : railfe::falling_friction(argv[2]);
-  } catch (const std::exception& e) {
-    std::cerr << e.what() << '\n';
-    return 1;
-  }
+  return railfe::run_study(
+      argc, argv, "railfe-contact-mechanics",
+      {{"falling-friction", railfe::falling_friction}, {"creep-table", railfe::creep_table}});
 }

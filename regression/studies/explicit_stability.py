@@ -71,6 +71,13 @@ def step_xml(time_step, allow, safety=None):
     return text
 
 
+# The Solid list that switches bulk viscosity off (it lowers the stable step).
+NO_BULK_VISCOSITY = """<ParameterList name="Solid">
+        <Parameter name="Bulk viscosity linear" type="double" value="0"/>
+        <Parameter name="Bulk viscosity quadratic" type="double" value="0"/>
+      </ParameterList>"""
+
+
 def bar_deck(time_step=None, allow=False, end_time=400e-6):
     """The explicit_bar_wave bar pushed at xmin by 0.1*(1 + y + 2*z) m/s on x, y and z."""
     return f"""<ParameterList name="railfe">
@@ -80,10 +87,7 @@ def bar_deck(time_step=None, allow=False, end_time=400e-6):
       <Parameter name="Module" type="string" value="explicit"/>
       <Parameter name="End time" type="double" value="{end_time:g}"/>
       {step_xml(time_step, allow)}
-      <ParameterList name="Solid">
-        <Parameter name="Bulk viscosity linear" type="double" value="0"/>
-        <Parameter name="Bulk viscosity quadratic" type="double" value="0"/>
-      </ParameterList>
+      {NO_BULK_VISCOSITY}
       <ParameterList name="Prescribed motion">
         <ParameterList name="pushed end">
           <Parameter name="Node set" type="string" value="xmin"/>
@@ -103,10 +107,7 @@ def bar_deck(time_step=None, allow=False, end_time=400e-6):
 def cube_deck(time_step=None, allow=False, end_time=400e-6, bulk_viscosity=False):
     """A free 0.1 m steel cube (10 mm elements) spinning and translating from t = 0; bulk
     viscosity off unless asked for (then railfe's defaults, which lower the stable step)."""
-    solid = "" if bulk_viscosity else """<ParameterList name="Solid">
-        <Parameter name="Bulk viscosity linear" type="double" value="0"/>
-        <Parameter name="Bulk viscosity quadratic" type="double" value="0"/>
-      </ParameterList>"""
+    solid = "" if bulk_viscosity else NO_BULK_VISCOSITY
     return f"""<ParameterList name="railfe">
   <Parameter name="Title" type="string" value="free spinning cube"/>
 {box_mesh_xml((0.1, 0.1, 0.1), (10, 10, 10), "cube", (-0.05, -0.05, -0.05))}{steel_materials_xml(["cube"])}{output_xml()}  <ParameterList name="Steps">
