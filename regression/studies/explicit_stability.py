@@ -78,58 +78,53 @@ NO_BULK_VISCOSITY = """<ParameterList name="Solid">
       </ParameterList>"""
 
 
-def bar_deck(time_step=None, allow=False, end_time=400e-6):
-    """The explicit_bar_wave bar pushed at xmin by 0.1*(1 + y + 2*z) m/s on x, y and z."""
+def explicit_deck(title, mesh_xml, block, time_step, allow, end_time, solid, conditions):
+    """A one-step explicit deck on the box `block` with energies every step: `solid` and
+    `conditions` are the step's Solid and loading sublists (XML, indented for the step)."""
     return f"""<ParameterList name="railfe">
-  <Parameter name="Title" type="string" value="bar, non-symmetric push"/>
-{box_mesh_xml((1.0, 0.01, 0.01), (200, 2, 2), "bar")}{steel_materials_xml(["bar"])}{output_xml()}  <ParameterList name="Steps">
-    <ParameterList name="bar">
+  <Parameter name="Title" type="string" value="{title}"/>
+{mesh_xml}{steel_materials_xml([block])}{output_xml()}  <ParameterList name="Steps">
+    <ParameterList name="{block}">
       <Parameter name="Module" type="string" value="explicit"/>
       <Parameter name="End time" type="double" value="{end_time:g}"/>
       {step_xml(time_step, allow)}
-      {NO_BULK_VISCOSITY}
-      <ParameterList name="Prescribed motion">
+      {solid}
+      {conditions}
+      <ParameterList name="Output">
+        <Parameter name="Energy interval" type="int" value="1"/>
+      </ParameterList>
+    </ParameterList>
+  </ParameterList>
+</ParameterList>
+"""
+
+
+def bar_deck(time_step=None, allow=False, end_time=400e-6):
+    """The explicit_bar_wave bar pushed at xmin by 0.1*(1 + y + 2*z) m/s on x, y and z."""
+    push = """<ParameterList name="Prescribed motion">
         <ParameterList name="pushed end">
           <Parameter name="Node set" type="string" value="xmin"/>
           <Parameter name="Components" type="string" value="xyz"/>
           <Parameter name="Function" type="string" value="0.1*(1 + y + 2*z)"/>
         </ParameterList>
-      </ParameterList>
-      <ParameterList name="Output">
-        <Parameter name="Energy interval" type="int" value="1"/>
-      </ParameterList>
-    </ParameterList>
-  </ParameterList>
-</ParameterList>
-"""
+      </ParameterList>"""
+    return explicit_deck("bar, non-symmetric push", box_mesh_xml((1.0, 0.01, 0.01), (200, 2, 2), "bar"),
+                         "bar", time_step, allow, end_time, NO_BULK_VISCOSITY, push)
 
 
 def cube_deck(time_step=None, allow=False, end_time=400e-6, bulk_viscosity=False):
     """A free 0.1 m steel cube (10 mm elements) spinning and translating from t = 0; bulk
     viscosity off unless asked for (then railfe's defaults, which lower the stable step)."""
-    solid = "" if bulk_viscosity else NO_BULK_VISCOSITY
-    return f"""<ParameterList name="railfe">
-  <Parameter name="Title" type="string" value="free spinning cube"/>
-{box_mesh_xml((0.1, 0.1, 0.1), (10, 10, 10), "cube", (-0.05, -0.05, -0.05))}{steel_materials_xml(["cube"])}{output_xml()}  <ParameterList name="Steps">
-    <ParameterList name="cube">
-      <Parameter name="Module" type="string" value="explicit"/>
-      <Parameter name="End time" type="double" value="{end_time:g}"/>
-      {step_xml(time_step, allow)}
-      {solid}
-      <ParameterList name="Initial velocity">
+    spin = """<ParameterList name="Initial velocity">
         <ParameterList name="spin">
-          <Parameter name="Translation" type="Array(double)" value="{{1, 2, 3}}"/>
-          <Parameter name="Angular velocity" type="Array(double)" value="{{100, 200, 300}}"/>
-          <Parameter name="Axis point" type="Array(double)" value="{{0, 0, 0}}"/>
+          <Parameter name="Translation" type="Array(double)" value="{1, 2, 3}"/>
+          <Parameter name="Angular velocity" type="Array(double)" value="{100, 200, 300}"/>
+          <Parameter name="Axis point" type="Array(double)" value="{0, 0, 0}"/>
         </ParameterList>
-      </ParameterList>
-      <ParameterList name="Output">
-        <Parameter name="Energy interval" type="int" value="1"/>
-      </ParameterList>
-    </ParameterList>
-  </ParameterList>
-</ParameterList>
-"""
+      </ParameterList>"""
+    mesh = box_mesh_xml((0.1, 0.1, 0.1), (10, 10, 10), "cube", (-0.05, -0.05, -0.05))
+    return explicit_deck("free spinning cube", mesh, "cube", time_step, allow, end_time,
+                         "" if bulk_viscosity else NO_BULK_VISCOSITY, spin)
 
 
 MESHES = {  # name: (deck maker, step name, legend label)
