@@ -1,5 +1,6 @@
 #include "contact/laws/halfspace.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <unsupported/Eigen/FFT>
@@ -32,6 +33,34 @@ double over_element(F f, double X, double Y, double hx, double hy) {
   return f(X + hx, Y + hy) - f(X + hx, Y - hy) - f(X - hx, Y + hy) + f(X - hx, Y - hy);
 }
 
+// FFT engines keep their plans per length: one per thread, one for real lines (half spectra)
+// and one for complex columns.
+Eigen::FFT<double>& real_engine() {
+  thread_local Eigen::FFT<double> engine(Eigen::default_fft_impl<double>(),
+                                         Eigen::FFT<double>::HalfSpectrum);
+  return engine;
+}
+Eigen::FFT<double>& complex_engine() {
+  thread_local Eigen::FFT<double> engine;
+  return engine;
+}
+
+// Transforms column \p k (\p rows entries, stride \p width) of \p data in place.
+void column_transform(std::vector<std::complex<double>>& data, int k, int width, int rows,
+                      bool inverse) {
+  thread_local std::vector<std::complex<double>> line, out;
+  line.resize(static_cast<std::size_t>(rows));
+  out.resize(static_cast<std::size_t>(rows));
+  for (int l = 0; l < rows; ++l)
+    line[l] = data[static_cast<std::size_t>(l) * width + k];
+  if (inverse)
+    complex_engine().inv(out.data(), line.data(), rows);
+  else
+    complex_engine().fwd(out.data(), line.data(), rows);
+  for (int l = 0; l < rows; ++l)
+    data[static_cast<std::size_t>(l) * width + k] = out[l];
+}
+
 }  // namespace
 
 HalfSpaceKernels::HalfSpaceKernels(const ContactGrid& grid, double G, double nu)
@@ -58,36 +87,25 @@ HalfSpaceKernels::HalfSpaceKernels(const ContactGrid& grid, double G, double nu)
     }
   // The kernel wrapped onto the padded grid: offset (di, dj) at (di mod 2mx, dj mod 2my).
   const int px = 2 * grid.mx, py = 2 * grid.my;
-  zz_spectrum_.assign(static_cast<std::size_t>(px) * py, 0.0);
+  std::vector<double> wrapped(static_cast<std::size_t>(px) * py, 0.0);
   for (int dj = -(grid.my - 1); dj < grid.my; ++dj)
     for (int di = -(grid.mx - 1); di < grid.mx; ++di)
-      zz_spectrum_[static_cast<std::size_t>((dj + py) % py) * px + (di + px) % px] =
+      wrapped[static_cast<std::size_t>((dj + py) % py) * px + (di + px) % px] =
           zz_[static_cast<std::size_t>(dj + grid.my - 1) * wx_ + (di + grid.mx - 1)];
-  fft2(zz_spectrum_, false);
+  zz_spectrum_ = half_spectrum(wrapped, py);
+  const int half = grid.mx + 1;
+  for (int k = 0; k < half; ++k)
+    column_transform(zz_spectrum_, k, half, py, false);
 }
 
-void HalfSpaceKernels::fft2(std::vector<std::complex<double>>& data, bool inverse) const {
-  const int px = 2 * grid_.mx, py = 2 * grid_.my;
-  Eigen::FFT<double> fft;
-  std::vector<std::complex<double>> line, out;
-  for (int direction = 0; direction < 2; ++direction) {
-    const int length = direction == 0 ? px : py, count = direction == 0 ? py : px;
-    line.resize(static_cast<std::size_t>(length));
-    for (int c = 0; c < count; ++c) {
-      auto at = [&](int k) -> std::complex<double>& {
-        return direction == 0 ? data[static_cast<std::size_t>(c) * px + k]
-                              : data[static_cast<std::size_t>(k) * px + c];
-      };
-      for (int k = 0; k < length; ++k)
-        line[k] = at(k);
-      if (inverse)
-        fft.inv(out, line);
-      else
-        fft.fwd(out, line);
-      for (int k = 0; k < length; ++k)
-        at(k) = out[k];
-    }
-  }
+std::vector<std::complex<double>> HalfSpaceKernels::half_spectrum(const std::vector<double>& padded,
+                                                                  int rows) const {
+  const int px = 2 * grid_.mx, py = 2 * grid_.my, half = grid_.mx + 1;
+  std::vector<std::complex<double>> spectrum(static_cast<std::size_t>(half) * py, 0.0);
+  for (int j = 0; j < rows; ++j)
+    real_engine().fwd(&spectrum[static_cast<std::size_t>(j) * half],
+                      &padded[static_cast<std::size_t>(j) * px], px);
+  return spectrum;
 }
 
 void HalfSpaceKernels::convolve(const std::vector<double>& kernel, const std::vector<double>& in,
@@ -110,20 +128,24 @@ void HalfSpaceKernels::convolve(const std::vector<double>& kernel, const std::ve
 }
 
 std::vector<double> HalfSpaceKernels::normal(const std::vector<double>& p) const {
-  const int px = 2 * grid_.mx, py = 2 * grid_.my;
-  std::vector<std::complex<double>> padded(static_cast<std::size_t>(px) * py, 0.0);
-  for (int j = 0; j < grid_.my; ++j)
-    for (int i = 0; i < grid_.mx; ++i)
-      padded[static_cast<std::size_t>(j) * px + i] = p[static_cast<std::size_t>(j) * grid_.mx + i];
-  fft2(padded, false);
-  for (std::size_t k = 0; k < padded.size(); ++k)
-    padded[k] *= zz_spectrum_[k];
-  fft2(padded, true);
-  std::vector<double> u(p.size());
-  for (int j = 0; j < grid_.my; ++j)
-    for (int i = 0; i < grid_.mx; ++i)
-      u[static_cast<std::size_t>(j) * grid_.mx + i] =
-          padded[static_cast<std::size_t>(j) * px + i].real();
+  const int mx = grid_.mx, my = grid_.my, px = 2 * mx, py = 2 * my, half = mx + 1;
+  std::vector<double> padded(static_cast<std::size_t>(px) * my, 0.0);
+  for (int j = 0; j < my; ++j)
+    std::copy_n(&p[static_cast<std::size_t>(j) * mx], mx,
+                &padded[static_cast<std::size_t>(j) * px]);
+  std::vector<std::complex<double>> spectrum = half_spectrum(padded, my);
+  for (int k = 0; k < half; ++k) {
+    column_transform(spectrum, k, half, py, false);
+    for (int l = 0; l < py; ++l)
+      spectrum[static_cast<std::size_t>(l) * half + k] *=
+          zz_spectrum_[static_cast<std::size_t>(l) * half + k];
+    column_transform(spectrum, k, half, py, true);
+  }
+  std::vector<double> u(p.size()), line(static_cast<std::size_t>(px));
+  for (int j = 0; j < my; ++j) {
+    real_engine().inv(line.data(), &spectrum[static_cast<std::size_t>(j) * half], px);
+    std::copy_n(line.data(), mx, &u[static_cast<std::size_t>(j) * mx]);
+  }
   return u;
 }
 

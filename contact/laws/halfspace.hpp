@@ -32,7 +32,8 @@ class HalfSpaceKernels {
   /// Kernels for \p grid, combined shear modulus \p G and Poisson's ratio \p nu of both bodies.
   HalfSpaceKernels(const ContactGrid& grid, double G, double nu);
   /// Normal displacement difference (m) of the pressures \p p (Pa), element-wise: a
-  /// convolution, evaluated by FFT on the grid padded to twice its size.
+  /// convolution, evaluated by real FFTs on the grid padded to twice its size (the padding's
+  /// zero rows are skipped).
   std::vector<double> normal(const std::vector<double>& p) const;
   /// The same by direct summation (for checking the FFT).
   std::vector<double> normal_direct(const std::vector<double>& p) const;
@@ -62,8 +63,11 @@ class HalfSpaceKernels {
   ContactGrid grid_;
   int wx_, wy_;  // kernel widths 2 mx - 1, 2 my - 1
   std::vector<double> zz_, xx_, yy_, xy_;
-  std::vector<std::complex<double>> zz_spectrum_;  // FFT of the padded, wrapped normal kernel
-  void fft2(std::vector<std::complex<double>>& data, bool inverse) const;
+  // Half spectrum ((mx + 1) × 2my, x fastest) of the normal kernel wrapped onto the grid padded
+  // to 2mx × 2my: the kernel and the pressures are real.
+  std::vector<std::complex<double>> zz_spectrum_;
+  std::vector<std::complex<double>> half_spectrum(const std::vector<double>& padded,
+                                                  int rows) const;
   void convolve(const std::vector<double>& kernel, const std::vector<double>& in,
                 std::vector<double>& out, bool accumulate) const;
 };

@@ -7,14 +7,24 @@
 namespace railfe {
 
 NormalSolution solve_normal(const HalfSpaceKernels& kernels, const std::vector<double>& separation,
-                            double load, double tolerance, int max_iterations) {
+                            double load, double tolerance, int max_iterations,
+                            const std::vector<double>* start) {
   const ContactGrid& grid = kernels.grid();
   const std::size_t n = static_cast<std::size_t>(grid.size());
-  if (separation.size() != n || !(load > 0))
-    throw std::invalid_argument("the normal problem needs a separation per element and a load");
+  if (separation.size() != n || !(load > 0) || (start && start->size() != n))
+    throw std::invalid_argument(
+        "the normal problem needs a separation (and a start, if any) per element and a load");
   const double cell = grid.dx * grid.dy;
   NormalSolution s;
   s.pressure.assign(n, load / (cell * static_cast<double>(n)));
+  if (start) {
+    double total = 0;
+    for (double p : *start)
+      total += std::max(p, 0.0) * cell;
+    if (total > 0)
+      for (std::size_t i = 0; i < n; ++i)
+        s.pressure[i] = std::max((*start)[i], 0.0) * load / total;
+  }
   std::vector<double> gap(n), direction(n, 0.0), previous(n);
   double gap_norm_old = 1;
   bool restart = true;
@@ -97,11 +107,15 @@ HertzPatch solve_hertz_patch(const HertzContact& hertz, double G, double nu, int
       -reach * hertz.a, -reach * hertz.b, 2 * reach * hertz.a / m, 2 * reach * hertz.b / m, m, m};
   HertzPatch patch;
   patch.kernels = std::make_unique<HalfSpaceKernels>(grid, G, nu);
-  std::vector<double> separation(grid.size());
+  std::vector<double> separation(grid.size()), start(grid.size());
   for (int j = 0; j < m; ++j)
-    for (int i = 0; i < m; ++i)
-      separation[j * m + i] = hertz.A * grid.x(i) * grid.x(i) + hertz.B * grid.y(j) * grid.y(j);
-  patch.normal = solve_normal(*patch.kernels, separation, hertz.load);
+    for (int i = 0; i < m; ++i) {
+      const double x = grid.x(i), y = grid.y(j);
+      separation[j * m + i] = hertz.A * x * x + hertz.B * y * y;
+      const double inside = 1 - (x / hertz.a) * (x / hertz.a) - (y / hertz.b) * (y / hertz.b);
+      start[j * m + i] = hertz.pressure * std::sqrt(std::max(inside, 0.0));
+    }
+  patch.normal = solve_normal(*patch.kernels, separation, hertz.load, 1e-10, 2000, &start);
   return patch;
 }
 

@@ -26,9 +26,12 @@ struct NormalSolution {
 };
 
 /// Pressures under total force \p load (N > 0) for the undeformed separation \p separation (m,
-/// one value per element of \p kernels' grid; zero where the bodies first touch).
+/// one value per element of \p kernels' grid; zero where the bodies first touch). The
+/// iterations start from \p start (Pa per element, scaled to the load; its positive elements
+/// form the first contact set) when given, else from a uniform pressure on the whole grid.
 NormalSolution solve_normal(const HalfSpaceKernels& kernels, const std::vector<double>& separation,
-                            double load, double tolerance = 1e-12, int max_iterations = 2000);
+                            double load, double tolerance = 1e-10, int max_iterations = 2000,
+                            const std::vector<double>* start = nullptr);
 
 /// A Hertzian patch on the grid the exact solver uses: its kernels and normal solution.
 struct HertzPatch {
@@ -39,6 +42,7 @@ struct HertzPatch {
 /// The normal problem of the separation A x² + B y² of \p hertz under its load, on an \p m × \p m
 /// grid reaching 10 % (and at least 1.5 elements) beyond the Hertz ellipse, so that the contact
 /// never reaches the grid's edge; both bodies of shear modulus \p G and Poisson's ratio \p nu.
+/// Starts from Hertz's pressure.
 HertzPatch solve_hertz_patch(const HertzContact& hertz, double G, double nu, int m);
 
 }  // namespace railfe

@@ -164,14 +164,19 @@ TangentialSolution solve_steady_rolling(const HalfSpaceKernels& kernels,
                                         const std::vector<double>& pressure, const Creepages& creep,
                                         const FrictionLaw& friction, double spread,
                                         double* spread_found, const TangentialSettings& settings) {
-  TangentialSolution first = solve_tangential(kernels, pressure, creep, friction, settings);
-  if (spread_found)
-    *spread_found = 0;
   const bool falling =
       friction.dynamic_coefficient < friction.static_coefficient && friction.decay > 0;
+  // Falling friction slows the sweeps' convergence: the two starts are settled far below the
+  // spread that tells them apart, so that a slow approach is not mistaken for two solutions.
+  TangentialSettings tight = settings;
+  if (falling)
+    tight.tolerance = std::min(settings.tolerance, 1e-4 * spread);
+  TangentialSolution first = solve_tangential(kernels, pressure, creep, friction, tight);
+  if (spread_found)
+    *spread_found = 0;
   if (!falling || !first.converged)
     return first;
-  TangentialSettings other = settings;
+  TangentialSettings other = tight;
   other.start_in_full_slip = !settings.start_in_full_slip;
   const TangentialSolution second = solve_tangential(kernels, pressure, creep, friction, other);
   const ContactGrid& g = kernels.grid();

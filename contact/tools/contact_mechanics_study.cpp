@@ -3,15 +3,19 @@
 // than one steady state as friction falls with slip velocity (Hertz patch of the issue's
 // wheel on a crown, 20 x 20 grid, ξ = 2e-3, V = 30 m/s, μs = 0.4). "creep-table OUT.csv" builds
 // the creep-force table shipped as inputs/kalker/creep_table_nu030.csv (exact solver at 30 x 30,
-// about a minute).
+// about a minute). "benchmark OUT.csv" times every theory (regression/benchmarks/contact_laws.py).
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <iostream>
 #include <string>
 
 #include "contact/laws/creep_table.hpp"
+#include "contact/laws/fastsim.hpp"
 #include "contact/laws/hertz.hpp"
 #include "contact/laws/normal_problem.hpp"
+#include "contact/laws/saturation.hpp"
 #include "contact/laws/tangential_problem.hpp"
 
 #include "contact/tools/study_main.hpp"
@@ -69,11 +73,102 @@ int creep_table(const std::string& out) {
   return 0;
 }
 
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Mean seconds per call of \p f over \p calls calls, best of three rounds.
+template <class F>
+double best_seconds_per_call(int calls, F&& f) {
+  double best = 1e300;
+  for (int round = 0; round < 3; ++round) {
+    const auto start = std::chrono::steady_clock::now();
+    for (int k = 0; k < calls; ++k)
+      f(k);
+    best = std::min(best, seconds_since(start) / calls);
+  }
+  return best;
+}
+
+// The patch (0.46 m wheel on a 0.30 m crown, 100 kN, steel, mu 0.3) and the six
+// partial-slip cases of the speed-accuracy study: per theory the evaluation time on one core,
+// and for the exact solver at 40 x 40 its parts (normal problem, tangential per case) and
+// iteration counts.
+int benchmark(const std::string& out) {
+  const double E = 210e9, nu = 0.3, G = E / (2 * (1 + nu)), load = 1e5, mu = 0.3;
+  const HertzContact h =
+      hertz_contact(1 / (2 * 0.46), 1 / (2 * 0.30), contact_modulus({E, nu}, {E, nu}), load);
+  const KalkerCoefficients c = KalkerTable::shipped().at(h.a, h.b, nu);
+  const std::vector<Creepages> cases = {{1e-3, 0, 0}, {3e-3, 0, 0}, {0, 1e-3, 0},
+                                        {0, 3e-3, 0}, {0, 0, 0.5},  {0, 0, 2}};
+  double sink = 0;
+  const auto each_case = [&](auto&& force) {
+    return [&, force](int k) {
+      const CreepForces f = force(cases[static_cast<std::size_t>(k) % cases.size()]);
+      sink += f.Fx + f.Fy;
+    };
+  };
+  const double linear = best_seconds_per_call(
+      3000000, each_case([&](const Creepages& s) { return kalker_linear(c, G, h.a, h.b, s); }));
+  const double coefficients = best_seconds_per_call(300000, [&](int k) {
+    sink += KalkerTable::shipped().at(h.a * (1 + 1e-9 * (k % 2)), h.b, nu).C11;
+  });
+  PolachParameters polach_law;
+  polach_law.friction = mu;
+  const double polach_forces = best_seconds_per_call(
+      3000000,
+      each_case([&](const Creepages& s) { return polach(c, G, h.a, h.b, load, s, polach_law); }));
+  FastsimSettings fastsim_grid;
+  fastsim_grid.fields = false;
+  const double fastsim_20 =
+      best_seconds_per_call(30000, each_case([&](const Creepages& s) {
+                              return fastsim(c, G, h.a, h.b, load, mu, s, fastsim_grid).forces;
+                            }));
+  const CreepTable& table = CreepTable::shipped();
+  const double tabled = best_seconds_per_call(300000, each_case([&](const Creepages& s) {
+                                                return table.forces(h.a, h.b, G, nu, load, mu, s);
+                                              }));
+  FrictionLaw coulomb;
+  coulomb.static_coefficient = coulomb.dynamic_coefficient = mu;
+  double normal = 1e300, tangential = 1e300;
+  int iterations = 0, sweeps = 0;
+  for (int round = 0; round < 3; ++round) {
+    auto start = std::chrono::steady_clock::now();
+    const HertzPatch patch = solve_hertz_patch(h, G, nu, 40);
+    normal = std::min(normal, seconds_since(start));
+    iterations = patch.normal.iterations;
+    start = std::chrono::steady_clock::now();
+    sweeps = 0;
+    for (const Creepages& s : cases) {
+      const TangentialSolution t =
+          solve_steady_rolling(*patch.kernels, patch.normal.pressure, s, coulomb);
+      sweeps = std::max(sweeps, t.sweeps);
+      sink += t.forces.Fx;
+    }
+    tangential = std::min(tangential, seconds_since(start) / cases.size());
+  }
+  std::ofstream csv(out);
+  csv << "quantity,value,unit,target\n"
+      << "Kalker linear forces," << linear * 1e6 << ",us,0.1\n"
+      << "Kalker coefficients lookup," << coefficients * 1e6 << ",us,\n"
+      << "Polach forces," << polach_forces * 1e6 << ",us,\n"
+      << "FASTSIM 20x20 forces," << fastsim_20 * 1e6 << ",us,5\n"
+      << "creep-force table," << tabled * 1e6 << ",us,1\n"
+      << "exact 40x40 normal problem," << normal * 1e3 << ",ms,\n"
+      << "exact 40x40 normal iterations," << iterations << ",1,\n"
+      << "exact 40x40 tangential problem," << tangential * 1e3 << ",ms,\n"
+      << "exact 40x40 tangential sweeps (most)," << sweeps << ",1,\n"
+      << "exact 40x40 evaluation," << (normal + tangential) * 1e3 << ",ms,50\n";
+  std::cout << "wrote " << out << " (checksum " << sink << ")\n";
+  return 0;
+}
+
 }  // namespace
 }  // namespace railfe
 
 int main(int argc, char** argv) {
-  return railfe::run_study(
-      argc, argv, "railfe-contact-mechanics",
-      {{"falling-friction", railfe::falling_friction}, {"creep-table", railfe::creep_table}});
+  return railfe::run_study(argc, argv, "railfe-contact-mechanics",
+                           {{"falling-friction", railfe::falling_friction},
+                            {"creep-table", railfe::creep_table},
+                            {"benchmark", railfe::benchmark}});
 }

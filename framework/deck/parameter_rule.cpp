@@ -29,6 +29,10 @@ Range Range::open(double low, double high) {
   return Range{low, high, false, false};
 }
 
+Range Range::open_closed(double low, double high) {
+  return Range{low, high, false, true};
+}
+
 bool Range::contains(double value) const {
   if (!std::isfinite(value))
     return false;

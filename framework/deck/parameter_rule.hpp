@@ -46,6 +46,8 @@ struct Range {
   static Range closed_open(double low, double high);
   /// Values in (low, high).
   static Range open(double low, double high);
+  /// Values in (low, high].
+  static Range open_closed(double low, double high);
 
   /// Whether \p value lies inside.
   bool contains(double value) const;

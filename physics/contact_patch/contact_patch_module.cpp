@@ -34,8 +34,20 @@ ParameterSpec contact_patch_parameters() {
   spec.real("Rolling speed", 30, "Turns slip into slip velocity (falling friction).", "m/s",
             Range::positive());
   spec.text_array("Theories", {"linear", "shen-hedrick-elkins", "fastsim", "exact"},
-                  "Any of linear, shen-hedrick-elkins, fastsim, table (the exact solver's "
-                  "creep-force table: a/b 0.2 to 5, Poisson's ratio 0.3), exact.");
+                  "Any of linear, shen-hedrick-elkins, polach, fastsim, table (the exact "
+                  "solver's creep-force table: a/b 0.2 to 5, Poisson's ratio 0.3), exact.");
+  spec.real("Polach adhesion reduction", 1,
+            "k_A: Polach's reduction of the creep-force slope in the area of adhesion.", "",
+            Range::open_closed(0, 1));
+  spec.real("Polach slip reduction", 1,
+            "k_S (at most k_A): Polach's reduction of the slope in the area of slip.", "",
+            Range::open_closed(0, 1));
+  spec.real("Polach friction ratio", 1,
+            "A = μ∞ / μ0 in Polach's μ = μ0 ((1 − A) exp(−B w) + A), μ0 the static friction "
+            "(1: friction independent of slip velocity w).",
+            "", Range::open_closed(0, 1));
+  spec.real("Polach friction decay", 0, "B in Polach's friction law.", "s/m",
+            Range::non_negative());
   spec.integer("FASTSIM cells", 20, "FASTSIM cells along each strip, and strips.",
                Range::at_least(1));
   spec.choice("FASTSIM bound", "parabolic",
@@ -60,7 +72,9 @@ ParameterSpec contact_patch_parameters() {
 ModuleDescriptor contact_patch_module() {
   ModuleDescriptor module;
   module.name = "contact patch";
-  module.summary = "one wheel-rail contact patch under Hertz, Kalker linear, FASTSIM and exact";
+  module.summary =
+      "one wheel-rail contact patch under Hertz, Kalker linear, saturation laws, FASTSIM, the "
+      "creep-force table and the exact solver";
   module.parameters = contact_patch_parameters;
   module.create = [](const Teuchos::ParameterList& parameters) {
     return std::make_unique<ContactPatchStep>(parameters);

@@ -20,8 +20,8 @@ namespace railfe {
 
 namespace {
 
-const std::vector<std::string> kTheories = {"linear", "shen-hedrick-elkins", "fastsim", "table",
-                                            "exact"};
+const std::vector<std::string> kTheories = {
+    "linear", "shen-hedrick-elkins", "polach", "fastsim", "table", "exact"};
 
 // Seconds per call of \p f, repeated until a millisecond has passed (cheap theories).
 template <class F>
@@ -48,7 +48,7 @@ void ContactPatchStep::check(const CheckContext& context) {
   for (const auto& name : parameters_->get<Teuchos::Array<std::string>>("Theories")) {
     if (std::find(kTheories.begin(), kTheories.end(), name) == kTheories.end())
       throw_input_error(source, context.path + "/Theories", "unknown theory '" + name + "'",
-                        "linear, shen-hedrick-elkins, fastsim, table, exact");
+                        "linear, shen-hedrick-elkins, polach, fastsim, table, exact");
     theories_.push_back(name);
   }
   const char* keys[3] = {"Longitudinal creepage", "Lateral creepage", "Spin creepage"};
@@ -73,6 +73,10 @@ void ContactPatchStep::check(const CheckContext& context) {
   if (mu_d > mu_s)
     throw_input_error(source, context.path + "/Dynamic friction", "exceeds the static friction",
                       "0 to Static friction, or negative (Coulomb)");
+  if (parameters_->get<double>("Polach slip reduction") >
+      parameters_->get<double>("Polach adhesion reduction"))
+    throw_input_error(source, context.path + "/Polach slip reduction",
+                      "exceeds Polach adhesion reduction", "0 < k_S <= k_A <= 1");
   if (parameters_->get<std::string>("Geometry") == "semi-axes") {
     const double ratio = parameters_->get<double>("a") / parameters_->get<double>("b");
     if (ratio < 0.1 || ratio > 10)
@@ -100,6 +104,13 @@ void ContactPatchStep::run(StepContext& context) {
   friction.dynamic_coefficient = mu_d < 0 ? friction.static_coefficient : mu_d;
   friction.decay = p.get<double>("Friction decay");
   friction.rolling_speed = p.get<double>("Rolling speed");
+  PolachParameters polach_law;
+  polach_law.friction = friction.static_coefficient;
+  polach_law.adhesion_reduction = p.get<double>("Polach adhesion reduction");
+  polach_law.slip_reduction = p.get<double>("Polach slip reduction");
+  polach_law.friction_ratio = p.get<double>("Polach friction ratio");
+  polach_law.friction_decay = p.get<double>("Polach friction decay");
+  polach_law.rolling_speed = friction.rolling_speed;
   FastsimSettings fastsim_grid;
   fastsim_grid.cells_x = fastsim_grid.strips = p.get<int>("FASTSIM cells");
   fastsim_grid.bound = p.get<std::string>("FASTSIM bound") == "elliptic" ? TractionBound::elliptic
@@ -152,6 +163,8 @@ void ContactPatchStep::run(StepContext& context) {
           f = shen_hedrick_elkins(kalker_linear(c, G, h.a, h.b, creep), load,
                                   friction.static_coefficient);
         });
+      } else if (theory == "polach") {
+        seconds = seconds_per_call([&] { f = polach(c, G, h.a, h.b, load, creep, polach_law); });
       } else if (theory == "table") {
         try {
           const CreepTable& table = CreepTable::shipped();  // read once, outside the timing

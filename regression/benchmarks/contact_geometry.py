@@ -11,38 +11,7 @@ Runs the railfe-contact-geometry tool three times and keeps the best of each fig
 docs/data/contact_geometry_benchmark.csv. Run on an idle machine from the repository root:
   /usr/bin/python3 regression/benchmarks/contact_geometry.py [build/bin/railfe-contact-geometry]
 """
-import csv
-import os
-import subprocess
-import sys
-import tempfile
-
-ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-OUT = os.path.join(ROOT, "docs", "data", "contact_geometry_benchmark.csv")
-
-
-def main():
-    tool = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build", "bin", "railfe-contact-geometry")
-    best = {}
-    with tempfile.TemporaryDirectory() as work:
-        for run in range(3):
-            path = os.path.join(work, f"run{run}.csv")
-            subprocess.run([tool, "benchmark", path], check=True, stdout=subprocess.DEVNULL)
-            with open(path) as f:
-                for row in csv.DictReader(f):
-                    value = float(row["value"])
-                    key = row["quantity"]
-                    if key not in best or (row["target"] and value < float(best[key]["value"])):
-                        best[key] = dict(row, value=value)
-    with open(OUT, "w", newline="") as f:
-        writer = csv.writer(f)
-        writer.writerow(["quantity", "value", "unit", "target", "within_target"])
-        for key, row in best.items():
-            within = "" if not row["target"] else ("yes" if row["value"] <= float(row["target"]) else "NO")
-            writer.writerow([key, f"{row['value']:.4g}", row["unit"], row["target"], within])
-            print(f"{key:40s} {row['value']:10.4g} {row['unit']:3s} target {row['target'] or '-':>4s} {within}")
-    print("wrote", OUT)
-
+import tool_benchmark
 
 if __name__ == "__main__":
-    main()
+    tool_benchmark.main("railfe-contact-geometry", "contact_geometry_benchmark.csv")

@@ -1,14 +1,19 @@
 #!/usr/bin/env python3
 """Speed against accuracy of the contact theories on the issue's Hertz patch (0.46 m wheel on a
-0.30 m crown, 100 kN, steel, mu 0.3), for three partial-slip cases: xi = 1e-3, eta = 1e-3, and
-spin phi = 0.5 /m. Reference: the exact solver at 80 x 80. Each theory's error is the largest
+0.30 m crown, 100 kN, steel, mu 0.3), for six cases: longitudinal xi = 1e-3 and 3e-3, lateral
+eta = 1e-3 and 3e-3, and spin phi = 0.5 and 2 /m (partial slip, from about half to mostly
+sliding). Reference: the exact solver at 80 x 80. Each theory's error is the largest
 |F - F_ref| / (mu N) over the cases (F = (Fx, Fy)); its time is the mean evaluation time the
 contact-patch scene reports (for the exact solver, the normal problem included). The table is
 the shipped creep-force table (exact solver at 30 x 30, interpolated).
 
+Also writes, case by case, each theory's force along its creepage (Fx for xi, Fy for eta and
+spin) and the spin moment against the reference: docs/data/contact_theories_by_case.csv.
+
     /usr/bin/python3 regression/studies/contact_speed_accuracy.py [build/bin/railfe] [workdir]
 
-Writes docs/data/contact_speed_accuracy.csv and docs/img/contact_speed_accuracy.png. Timings
+Writes docs/data/contact_speed_accuracy.csv, docs/data/contact_theories_by_case.csv and
+docs/img/contact_speed_accuracy.png. Timings
 need an idle machine.
 """
 import csv
@@ -27,7 +32,9 @@ from railfe_runs import csv_rows, run_deck, xml_array  # noqa: E402
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 CSV = os.path.join(ROOT, "docs", "data", "contact_speed_accuracy.csv")
 PNG = os.path.join(ROOT, "docs", "img", "contact_speed_accuracy.png")
-CASES = {"xi": [1e-3, 0, 0], "eta": [0, 1e-3, 0], "phi": [0, 0, 0.5]}
+BY_CASE = os.path.join(ROOT, "docs", "data", "contact_theories_by_case.csv")
+CASES = {"xi 1e-3": [1e-3, 0, 0], "xi 3e-3": [3e-3, 0, 0], "eta 1e-3": [0, 1e-3, 0],
+         "eta 3e-3": [0, 3e-3, 0], "phi 0.5/m": [0, 0, 0.5], "phi 2/m": [0, 0, 2.0]}
 MU_N = 0.3 * 1e5
 
 
@@ -60,12 +67,22 @@ def main():
     workdir = sys.argv[2] if len(sys.argv) > 2 else "/tmp/railfe_contact_speed_accuracy"
     reference = {r["case"]: r for r in forces(railfe, workdir, "reference", ["exact"], exact_grid=80)}
     runs = [("linear", "linear", {}), ("shen-hedrick-elkins", "shen-hedrick-elkins", {}),
-            ("table", "table", {})]
+            ("polach", "polach", {}), ("table", "table", {})]
     runs += [(f"fastsim {n}x{n}", "fastsim", {"fastsim_cells": n}) for n in (5, 10, 20, 40, 80)]
     runs += [(f"exact {n}x{n}", "exact", {"exact_grid": n}) for n in (10, 20, 30, 40, 60)]
-    out = []
+    out, by_case = [], []
+    names = list(CASES)
     for label, theory, grid in runs:
         rows = forces(railfe, workdir, label.replace(" ", "_"), [theory], **grid)
+        for r in rows:
+            ref = reference[r["case"]]
+            force = "Fx_N" if names[int(r["case"])].startswith("xi") else "Fy_N"
+            relative = lambda column: (float(r[column]) / float(ref[column]) - 1) * 100  # noqa: E731
+            by_case.append({"theory": label, "case": names[int(r["case"])], "force": force[:2],
+                            "F_N": float(r[force]), "F_reference_N": float(ref[force]),
+                            "F_difference_percent": relative(force),
+                            "Mz_Nm": float(r["Mz_Nm"]), "Mz_reference_Nm": float(ref["Mz_Nm"]),
+                            "Mz_difference_percent": relative("Mz_Nm") if force == "Fy_N" else ""})
         error = max(math.hypot(float(r["Fx_N"]) - float(reference[r["case"]]["Fx_N"]),
                                float(r["Fy_N"]) - float(reference[r["case"]]["Fy_N"])) / MU_N for r in rows)
         seconds = sum(float(r["time_s"]) for r in rows) / len(rows)
@@ -75,8 +92,13 @@ def main():
         writer = csv.DictWriter(f, fieldnames=["theory", "time_s", "max_error_over_muN"])
         writer.writeheader()
         writer.writerows(out)
+    with open(BY_CASE, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(by_case[0]))
+        writer.writeheader()
+        writer.writerows(by_case)
     fig, ax = plt.subplots(figsize=(8, 5.5))
-    for family, marker in (("linear", "s"), ("shen", "D"), ("table", "P"), ("fastsim", "o"), ("exact", "^")):
+    for family, marker in (("linear", "s"), ("shen", "D"), ("polach", "v"), ("table", "P"), ("fastsim", "o"),
+                           ("exact", "^")):
         mine = [r for r in out if r["theory"].startswith(family)]
         ax.loglog([r["time_s"] for r in mine], [r["max_error_over_muN"] for r in mine], marker + "-",
                   label=family if family != "shen" else "shen-hedrick-elkins")
@@ -87,7 +109,7 @@ def main():
     ax.text(50e-3, ax.get_ylim()[1], " exact target 50 ms", fontsize=7, va="top")
     ax.set_xlabel("evaluation time, one core (s)")
     ax.set_ylabel("largest creep-force error / (μN) against exact 80 × 80")
-    ax.set_title("Contact theories: speed against accuracy (ξ, η and spin cases)")
+    ax.set_title("Contact theories: speed against accuracy (two ξ, two η and two spin cases)")
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=8)
     fig.tight_layout()
