@@ -35,10 +35,6 @@ WheelRailGeometry benchmark_geometry() {
                            shipped_curve("MBench_S1002_v3.prw"), track, WheelsetLayout{});
 }
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 int stability(const std::string& out) {
   const WheelRailGeometry geometry = benchmark_geometry();
   const ContactTable fine(geometry, 0.015, 3001), coarse(geometry, 0.015, 121);

@@ -73,10 +73,6 @@ int creep_table(const std::string& out) {
   return 0;
 }
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 // Mean seconds per call of \p f over \p calls calls, best of three rounds.
 template <class F>
 double best_seconds_per_call(int calls, F&& f) {

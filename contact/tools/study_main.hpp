@@ -1,13 +1,20 @@
 #pragma once
 /// \file
-/// The command line of the contact study tools: `TOOL MODE OUT.csv`, one function per mode.
+/// The command line of the contact study tools: `TOOL MODE OUT.csv`, one function per mode; and
+/// their clock.
 
+#include <chrono>
 #include <exception>
 #include <iostream>
 #include <map>
 #include <string>
 
 namespace railfe {
+
+/// Seconds elapsed since \p start.
+inline double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 /// Runs the mode named by argv[1] with the output path argv[2]; prints the usage (status 2)
 /// for anything else and the message (status 1) when the mode throws.
