@@ -18,8 +18,10 @@ void ModuleRegistry::add_section(SectionDescriptor section) {
 }
 
 void ModuleRegistry::add_mesh_generator(MeshGeneratorDescriptor generator) {
-  // The names taken so far: the framework's own types and the generators registered before.
-  const auto* types = rule_of(mesh_parameters(generators_).list()->getEntry("Type"));
+  // The names taken so far: the framework's own types and the generators registered before. The
+  // spec is kept in a named variable because the rule lives inside its parameter list.
+  const ParameterSpec taken = mesh_parameters(generators_);
+  const auto* types = rule_of(taken.list()->getEntry("Type"));
   for (const auto& choice : types->choices()) {
     if (choice.value == generator.name) {
       throw std::logic_error("railfe: mesh type '" + generator.name + "' registered twice");

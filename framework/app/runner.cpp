@@ -24,6 +24,43 @@ std::string results_directory(const RunOptions& options, const Deck& deck) {
   return std::filesystem::path(deck.source).stem().string() + "_results";
 }
 
+// A results directory that cannot be written is the user's input: refused (exit 1) before the
+// mesh is built, so no run ends after hours without its results.
+void check_results_directory(const RunOptions& options, const Deck& deck, const std::string& path,
+                             const Communicator& comm) {
+  std::string problem;
+  if (comm.is_root()) {
+    namespace fs = std::filesystem;
+    std::error_code error;
+    fs::path existing = fs::absolute(path, error);
+    while (!existing.empty() && !fs::exists(existing, error) && existing != existing.parent_path())
+      existing = existing.parent_path();
+    const bool target_exists = fs::exists(path, error);
+    if (target_exists && !fs::is_directory(path, error)) {
+      problem = "'" + path + "' is a file, not a directory";
+    } else if (!fs::is_directory(existing, error)) {
+      problem = "'" + existing.string() + "' is a file, so '" + path + "' cannot be created";
+    } else {
+      // Permission bits do not bind root, and a read-only file system ignores them: a probe
+      // file is the only reliable test.
+      const fs::path probe = existing / ".railfe-write-test";
+      {
+        std::ofstream file(probe);
+        if (!file)
+          problem = "'" + existing.string() + "' is not writable";
+      }
+      fs::remove(probe, error);
+    }
+  }
+  const bool from_command_line = !options.output.empty();
+  if (!problem.empty())
+    problem = format_input_message(from_command_line ? "command line" : deck.source,
+                                   from_command_line ? "--output" : "Output/Directory",
+                                   "the results directory cannot be written: " + problem,
+                                   "a writable directory, or a path where one can be created");
+  comm.agree(problem, true);
+}
+
 std::string today() {
   char buffer[32];
   const std::time_t now = std::time(nullptr);
@@ -58,6 +95,8 @@ int run(const RunOptions& options, const ModuleRegistry& registry, const Communi
   Deck deck = read_deck(options.deck, comm);
   validate_deck(deck, registry);
   const double read_seconds = phase.seconds();
+
+  check_results_directory(options, deck, results_directory(options, deck), comm);
 
   phase.restart();
   // Geometry-only decks (contact geometry, contact patches) have no Mesh section; steps whose
@@ -130,12 +169,14 @@ int run(const RunOptions& options, const ModuleRegistry& registry, const Communi
       std::fflush(stdout);
     }
     phase.restart();
+    output->begin_step(prepared.name);
     StepContext context{model,   prepared.name, prepared.path, *prepared.parameters,
                         *output, summary,       quiet,         progress_interval};
     prepared.step->run(context);
     summary.add("Wall time", "step " + prepared.name, phase.seconds(), "s");
   }
 
+  output->begin_step("");
   summary.add("Wall time", "total", total.seconds(), "s");
   const double peak = static_cast<double>(peak_resident_bytes());
   summary.add("Memory", "peak resident, largest rank", comm.max(peak) / 1048576.0, "MiB");

@@ -1,9 +1,12 @@
 #include "framework/deck/deck.hpp"
 
+#include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -28,21 +31,41 @@ std::string Deck::resolve(const std::string& file_name) const {
 
 namespace {
 
+// Only plain decimal numbers: strtod alone would also take "nan", "inf" and hexadecimal
+// ("0x10" = 16), which Teuchos then reads differently (inside an array, "nan" becomes 0).
 bool parses_as_number(const std::string& text, bool integer) {
-  const char* begin = text.c_str();
-  while (std::isspace(static_cast<unsigned char>(*begin)))
-    ++begin;
-  char* end = nullptr;
-  if (integer) {
-    std::strtoll(begin, &end, 10);
-  } else {
-    std::strtod(begin, &end);
+  std::size_t i = 0;
+  const std::size_t n = text.size();
+  auto digits = [&] {
+    const std::size_t start = i;
+    while (i < n && std::isdigit(static_cast<unsigned char>(text[i])))
+      ++i;
+    return i - start;
+  };
+  while (i < n && std::isspace(static_cast<unsigned char>(text[i])))
+    ++i;
+  if (i < n && (text[i] == '+' || text[i] == '-'))
+    ++i;
+  std::size_t mantissa = digits();
+  if (!integer && i < n && text[i] == '.') {
+    ++i;
+    mantissa += digits();
   }
-  if (end == begin)
+  if (mantissa == 0)
     return false;
-  while (std::isspace(static_cast<unsigned char>(*end)))
-    ++end;
-  return *end == '\0';
+  if (!integer && i < n && (text[i] == 'e' || text[i] == 'E')) {
+    ++i;
+    if (i < n && (text[i] == '+' || text[i] == '-'))
+      ++i;
+    if (digits() == 0)
+      return false;
+  }
+  while (i < n && std::isspace(static_cast<unsigned char>(text[i])))
+    ++i;
+  if (i != n)
+    return false;
+  // A decimal number too large for a double (1e999) would become inf.
+  return integer ? true : std::isfinite(std::strtod(text.c_str(), nullptr));
 }
 
 // Teuchos turns type="double" value="abc" into 0 without a word: every number and flag is
@@ -53,6 +76,12 @@ std::string value_problem(const std::string& type, const std::string& value) {
   const bool integer = element == "int" || element == "long long";
   const bool real = element == "double" || element == "float";
   const bool flag = element == "bool";
+  if (is_array && element == "string") {
+    const auto open = value.find('{'), close = value.rfind('}');
+    if (open == std::string::npos || close == std::string::npos || close < open)
+      return "array value '" + value + "' is not written as {a, b, c}";
+    return "";
+  }
   if (!integer && !real && !flag)
     return "";
   std::vector<std::string> items;
@@ -76,7 +105,9 @@ std::string value_problem(const std::string& type, const std::string& value) {
   } else {
     items.push_back(value);
   }
-  for (const auto& item : items) {
+  for (auto item : items) {
+    item.erase(0, item.find_first_not_of(" \t\n"));
+    item.erase(item.find_last_not_of(" \t\n") + 1);
     if (flag) {
       std::string word;
       for (char c : item) {
@@ -92,6 +123,10 @@ std::string value_problem(const std::string& type, const std::string& value) {
   }
   return "";
 }
+
+// The value types a deck may use (what railfe's parameters read).
+const std::string kTypes[] = {"double",        "int",        "bool",         "string",
+                              "Array(double)", "Array(int)", "Array(string)"};
 
 // Teuchos keeps the last of two same-named entries without a word; a deck that names a
 // parameter twice is almost always a copy-paste slip, so it is refused.
@@ -109,6 +144,19 @@ void check_duplicates(const Teuchos::XMLObject& node, const std::string& source,
       throw_input_error(source, path, "<" + tag + "> without a name attribute");
     }
     const std::string name = child.getAttribute("name");
+    if (tag == "Parameter") {
+      // Teuchos would stop with its own words ("Bad Parameter", "Can't find converter"), which
+      // name neither the deck's parameter nor what is allowed.
+      if (!child.hasAttribute("type") || !child.hasAttribute("value"))
+        throw_input_error(source, join_path(path, name),
+                          std::string("<Parameter> without a ") +
+                              (child.hasAttribute("type") ? "value" : "type") + " attribute",
+                          "<Parameter name=\"...\" type=\"...\" value=\"...\"/>");
+      const std::string type = child.getAttribute("type");
+      if (std::find(std::begin(kTypes), std::end(kTypes), type) == std::end(kTypes))
+        throw_input_error(source, join_path(path, name), "unknown type '" + type + "'",
+                          "double, int, bool, string, Array(double), Array(int), Array(string)");
+    }
     if (tag == "Parameter" && child.hasAttribute("type") && child.hasAttribute("value")) {
       const std::string problem =
           value_problem(child.getAttribute("type"), child.getAttribute("value"));

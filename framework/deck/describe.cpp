@@ -70,8 +70,13 @@ void collect(const Teuchos::ParameterList& valid, const std::string& path, const
       type = "ParameterList of named sublists";
     if (rule->kind() == ParameterKind::choice)
       type = "string (choice)";
-    section.rows.push_back(
-        {name, type, default_text(entry, *rule), allowed, rule->units(), entry.docString()});
+    std::string doc = entry.docString();
+    if (rule->condition()) {
+      const bool array =
+          valid.getEntry(rule->condition()->controller).isType<Teuchos::Array<std::string>>();
+      doc += " Only when " + rule->condition()->describe(array) + ".";
+    }
+    section.rows.push_back({name, type, default_text(entry, *rule), allowed, rule->units(), doc});
     for (const auto& choice : rule->choices()) {
       section.choice_docs.push_back(name + " = '" + choice.value + "': " + choice.doc);
     }

@@ -62,6 +62,13 @@ std::string Range::describe() const {
          number_text(*upper) + (upper_inclusive ? "]" : ")");
 }
 
+std::string Condition::describe(bool array_controller) const {
+  std::string text = controller + (array_controller ? " contains " : " is ");
+  for (std::size_t i = 0; i < values.size(); ++i)
+    text += (i == 0 ? "'" : i + 1 == values.size() ? " or '" : ", '") + values[i] + "'";
+  return text;
+}
+
 ParameterRule::ParameterRule(ParameterKind kind, bool required, std::string units, Range range,
                              std::vector<Choice> choices, int array_size)
     : kind_(kind),

@@ -61,6 +61,15 @@ struct Choice {
   std::string doc;    ///< what it means
 };
 
+/// A parameter that means something only for some values of another parameter of the same list
+/// (the controller: a choice, a flag, or a string array that must contain one of the values).
+struct Condition {
+  std::string controller;           ///< the parameter that decides
+  std::vector<std::string> values;  ///< its values (for a flag "true"/"false") that give meaning
+  /// "Geometry is 'semi-axes'", "Theories contains 'exact' or 'fastsim'", for messages and docs.
+  std::string describe(bool array_controller) const;
+};
+
 /// The validator attached to every parameter railfe declares.
 class ParameterRule : public Teuchos::ParameterEntryValidator {
  public:
@@ -85,6 +94,11 @@ class ParameterRule : public Teuchos::ParameterEntryValidator {
   /// Marks a sublist as validated by its owner rather than by the level that declares it.
   void set_delegated(bool delegated) { delegated_ = delegated; }
 
+  /// The condition under which the parameter means something (none: always).
+  const std::optional<Condition>& condition() const { return condition_; }
+  /// Sets the condition (ParameterSpec::only_when()).
+  void set_condition(Condition condition) { condition_ = std::move(condition); }
+
   /// Checks \p entry; returns "" if it is acceptable, else the problem, phrased for a message.
   std::string check(const Teuchos::ParameterEntry& entry) const;
   /// The allowed values, phrased for a message ("> 0", "'cg', 'gmres'", "3 numbers").
@@ -107,6 +121,7 @@ class ParameterRule : public Teuchos::ParameterEntryValidator {
   std::vector<Choice> choices_;
   int array_size_;
   bool delegated_ = false;
+  std::optional<Condition> condition_;
 };
 
 /// Returns the rule attached to \p entry, or nullptr if it has none.

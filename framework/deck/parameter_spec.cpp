@@ -1,5 +1,7 @@
 #include "framework/deck/parameter_spec.hpp"
 
+#include <stdexcept>
+
 #include <Teuchos_Array.hpp>
 
 namespace railfe {
@@ -139,6 +141,26 @@ ParameterSpec& ParameterSpec::delegated_sublist(const std::string& name,
   auto sublist_rule = rule(ParameterKind::sublist, required);
   sublist_rule->set_delegated(true);
   add(name, Teuchos::ParameterEntry(*contents.list()), doc, sublist_rule);
+  return *this;
+}
+
+ParameterSpec& ParameterSpec::only_when(const std::string& controller,
+                                        const std::vector<std::string>& values,
+                                        const std::vector<std::string>& names) {
+  if (list_->getEntryPtr(controller) == nullptr)
+    throw std::logic_error("railfe: only_when: no controller '" + controller + "'");
+  for (const auto& name : names) {
+    const Teuchos::ParameterEntry* entry = list_->getEntryPtr(name);
+    auto* rule =
+        entry == nullptr
+            ? nullptr
+            : dynamic_cast<ParameterRule*>(
+                  Teuchos::rcp_const_cast<Teuchos::ParameterEntryValidator>(entry->validator())
+                      .get());
+    if (rule == nullptr)
+      throw std::logic_error("railfe: only_when: no parameter '" + name + "'");
+    rule->set_condition({controller, values});
+  }
   return *this;
 }
 

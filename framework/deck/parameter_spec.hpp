@@ -71,6 +71,13 @@ class ParameterSpec {
   ParameterSpec& delegated_sublist(const std::string& name, const ParameterSpec& contents,
                                    const std::string& doc, bool required = false);
 
+  /// Declares that the parameters \p names (declared before) mean something only when the
+  /// parameter \p controller of this list (a choice, a flag, or a string array) has one of
+  /// \p values (a flag: "true" or "false"; an array: contains one of them). A deck that gives
+  /// one of them otherwise is refused, naming both, so no given value is ignored in silence.
+  ParameterSpec& only_when(const std::string& controller, const std::vector<std::string>& values,
+                           const std::vector<std::string>& names);
+
   /// The valid list being built.
   Teuchos::RCP<Teuchos::ParameterList> list() const { return list_; }
   /// What the list is for.

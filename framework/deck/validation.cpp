@@ -1,5 +1,6 @@
 #include "framework/deck/validation.hpp"
 
+#include <algorithm>
 #include <vector>
 
 #include <Teuchos_Array.hpp>
@@ -55,6 +56,48 @@ bool has_required_entries(const Teuchos::ParameterList& valid) {
   return false;
 }
 
+// The value of \p controller as words: the deck's if given, else the default.
+std::vector<std::string> controller_words(const Teuchos::ParameterList& given,
+                                          const Teuchos::ParameterList& valid,
+                                          const std::string& controller) {
+  const Teuchos::ParameterEntry& entry =
+      given.isParameter(controller) ? given.getEntry(controller) : valid.getEntry(controller);
+  if (entry.isType<bool>())
+    return {entry.getValue<bool>(nullptr) ? "true" : "false"};
+  if (entry.isType<std::string>())
+    return {entry.getValue<std::string>(nullptr)};
+  if (entry.isType<Teuchos::Array<std::string>>()) {
+    const auto& words = entry.getValue<Teuchos::Array<std::string>>(nullptr);
+    return {words.begin(), words.end()};
+  }
+  return {};
+}
+
+// Refuses a parameter the deck gives although its list's choices make it meaningless. Entries
+// that validation itself filled in with defaults are marked as such and pass.
+void check_condition(const Teuchos::ParameterList& given, const Teuchos::ParameterList& valid,
+                     const std::string& name, const ParameterRule& rule, const std::string& source,
+                     const std::string& path) {
+  if (!rule.condition() || given.getEntry(name).isDefault())
+    return;
+  const Condition& condition = *rule.condition();
+  const auto words = controller_words(given, valid, condition.controller);
+  for (const auto& word : words) {
+    if (std::find(condition.values.begin(), condition.values.end(), word) != condition.values.end())
+      return;
+  }
+  const bool array = valid.getEntry(condition.controller).isType<Teuchos::Array<std::string>>();
+  std::string actual;
+  for (std::size_t i = 0; i < words.size(); ++i)
+    actual += (i ? ", '" : "'") + words[i] + "'";
+  const bool defaulted = !given.isParameter(condition.controller);
+  throw_input_error(source, join_path(path, name),
+                    "is used only when " + condition.describe(array) + ", but " +
+                        condition.controller + (array ? " holds " : " is ") + actual +
+                        (defaulted ? " (its default)" : "") + ", so the value would be ignored",
+                    "remove '" + name + "', or set " + condition.controller);
+}
+
 }  // namespace
 
 void validate_and_complete(Teuchos::ParameterList& given, const Teuchos::ParameterList& valid,
@@ -82,6 +125,7 @@ void validate_and_complete(Teuchos::ParameterList& given, const Teuchos::Paramet
       throw_input_error(source, join_path(path, name), problem, rule->describe_allowed());
     }
     normalize_number_types(given, name, *rule);
+    check_condition(given, valid, name, *rule, source, path);
 
     if (rule->kind() == ParameterKind::sublist && !rule->delegated()) {
       validate_and_complete(given.sublist(name),
@@ -129,6 +173,7 @@ void validate_and_complete(Teuchos::ParameterList& given, const Teuchos::Paramet
     } else {
       Teuchos::ParameterEntry copy = valid.entry(it);
       copy.setValidator(Teuchos::null);
+      copy.setAnyValue(copy.getAny(false), true);  // a default, not the deck's word
       given.setEntry(name, copy);
     }
   }

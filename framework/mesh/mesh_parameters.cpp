@@ -1,5 +1,7 @@
 #include "framework/mesh/mesh_parameters.hpp"
 
+#include <filesystem>
+
 #include <Teuchos_Array.hpp>
 
 #include <cctype>
@@ -177,7 +179,16 @@ Mesh build_mesh(const Teuchos::ParameterList& section, const Deck& deck,
                         "a path to the mesh file");
     }
     const std::string path = deck.resolve(file);
-    mesh = type == "exodus" ? read_exodus_mesh(path) : read_gmsh_mesh(path);
+    if (std::filesystem::is_directory(path))
+      throw_input_error(deck.source, "Mesh/File", "'" + path + "' is a directory",
+                        "a " + type + " mesh file");
+    // The reader names the file and line; the deck and the parameter that pointed there come
+    // first, so the user knows which deck to mend.
+    try {
+      mesh = type == "exodus" ? read_exodus_mesh(path) : read_gmsh_mesh(path);
+    } catch (const InputError& error) {
+      throw_input_error(deck.source, "Mesh/File", error.what());
+    }
     const double scale = section.get<double>("Length scale");
     for (double& x : mesh.coordinates)
       x *= scale;
@@ -210,7 +221,11 @@ Mesh build_mesh(const Teuchos::ParameterList& section, const Deck& deck,
     spec.box = array_of<6>(entry.get<Teuchos::Array<double>>("Box"));
     derived.push_back(spec);
   }
-  check_mesh(mesh);
+  try {
+    check_mesh(mesh);
+  } catch (const InputError& error) {
+    throw_input_error(deck.source, "Mesh", error.what());
+  }
   add_derived_sets(mesh, derived, deck.source);
   return mesh;
 }

@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "framework/base/error.hpp"
+#include "framework/output/finite_check.hpp"
 
 namespace railfe {
 
@@ -42,8 +43,15 @@ OutputDirectory::OutputDirectory(std::string path, const Communicator& comm)
 }
 
 std::string OutputDirectory::staging_path(const std::string& name) {
-  if (std::find(names_.begin(), names_.end(), name) == names_.end())
+  const auto known = std::find(names_.begin(), names_.end(), name);
+  if (known == names_.end()) {
     names_.push_back(name);
+    owners_.push_back(current_step_);
+  } else if (const std::string& owner = owners_[known - names_.begin()]; owner != current_step_) {
+    throw RunError("step '" + current_step_ + "' would overwrite '" + name + "', written by " +
+                   (owner.empty() ? std::string("the run itself") : "step '" + owner + "'") +
+                   "; rename one of the steps so that their files differ");
+  }
   return (fs::path(path_) / (name + ".part")).string();
 }
 
@@ -54,6 +62,21 @@ std::string OutputDirectory::final_path(const std::string& name) const {
 void OutputDirectory::finalize() {
   comm_.barrier();  // every rank has finished writing before files are renamed
   std::string problem;
+  if (comm_.is_root()) {
+    for (const auto& name : names_) {
+      const fs::path staged = fs::path(path_) / (name + ".part");
+      if (!fs::exists(staged))
+        continue;
+      const std::string where = find_non_finite(staged.string());
+      if (!where.empty()) {
+        problem = "a result is not finite (NaN or inf) in " + name + ", " + where +
+                  ": the computation that produced it failed, so the run's results are kept "
+                  "as .part files and must not be used";
+        break;
+      }
+    }
+  }
+  comm_.agree(problem, false);
   if (comm_.is_root()) {
     std::ofstream manifest(fs::path(path_) / kManifest);
     for (const auto& name : names_) {

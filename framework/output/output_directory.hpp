@@ -21,11 +21,18 @@ class OutputDirectory {
 
   /// The directory.
   const std::string& path() const { return path_; }
-  /// Path to write \p name to during the run (NAME.part); registers it for finalize().
+  /// Names the step whose files are registered from now on ("" for the run's own files), so that
+  /// no step can overwrite another's results.
+  void begin_step(const std::string& step_name) { current_step_ = step_name; }
+  /// Path to write \p name to during the run (NAME.part); registers it for finalize(). Asking
+  /// again from the same step returns the same path; a file registered by another step is a
+  /// RunError naming both steps (one step's results never overwrite another's).
   std::string staging_path(const std::string& name);
   /// Final path of \p name (valid after finalize()).
   std::string final_path(const std::string& name) const;
-  /// Renames every registered file to its final name and writes the manifest (collective).
+  /// Checks that no registered file holds NaN or inf (a RunError naming the file and where, on
+  /// every rank), then renames every registered file to its final name and writes the manifest
+  /// (collective).
   void finalize();
   /// Records the failure in FAILED.txt; staged files keep their .part names and are listed in
   /// the manifest for the next run to remove (rank 0 only).
@@ -37,6 +44,8 @@ class OutputDirectory {
   std::string path_;
   Communicator comm_;
   std::vector<std::string> names_;
+  std::vector<std::string> owners_;  // the step that registered names_[i]
+  std::string current_step_;
 };
 
 }  // namespace railfe

@@ -137,6 +137,8 @@ class KrylovSolver : public LinearSolver {
     // Belos stops on its recursively updated residual; the true one may drift a little above it,
     // and no method gets below the round-off floor (backward error ~1e-16): a solution whose
     // backward error is at that floor is as accurate as double precision allows.
+    if (!std::isfinite(norms.backward_error))
+      require_backward_error(norms, 0.0, report.method);  // names the non-finite solution
     const bool accurate = norms.relative_residual <= 10 * settings_.relative_tolerance ||
                           norms.backward_error <= kRoundOffBackwardError;
     if (outcome != Belos::Converged || !accurate) {

@@ -32,7 +32,7 @@ ParameterSpec linear_solver_parameters() {
                {"ilu", "incomplete LU, ILU(0), on each rank's rows"},
                {"jacobi", "diagonal scaling"},
                {"none", "no preconditioner"}},
-              "Preconditioner of cg and gmres (ignored by direct methods).");
+              "Preconditioner of cg and gmres.");
   spec.real("Relative tolerance", 1e-10,
             "Iterative methods stop when ||b - A x|| / ||b|| is below this.", "",
             Range::open(0.0, 1.0));
@@ -44,6 +44,10 @@ ParameterSpec linear_solver_parameters() {
             "Direct methods fail with an error when ||b - A x||inf / (||A||inf ||x||inf + "
             "||b||inf) exceeds this (a sound factorization gives about 1e-16).",
             "", Range::open(0.0, 1.0));
+  spec.only_when("Method", {"cg", "gmres"},
+                 {"Preconditioner", "Relative tolerance", "Maximum iterations"});
+  spec.only_when("Method", {"gmres"}, {"Restart"});
+  spec.only_when("Method", {"cholmod", "klu2"}, {"Backward error limit"});
   return spec;
 }
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "framework/assembly/tpetra_compat.hpp"
@@ -34,6 +35,10 @@ ResidualNorms residual_norms(const TpetraMatrix& A, const TpetraVector& x, const
   Teuchos::reduceAll(*A.getComm(), Teuchos::REDUCE_MAX, row_max, Teuchos::outArg(a_norm));
   const double denominator = a_norm * x.normInf() + b.normInf();
   norms.backward_error = denominator > 0 ? residual.normInf() / denominator : 0.0;
+  // The infinity norms take maxima, which pass over NaN entries; the 1-norms add them up, so a
+  // single NaN or inf anywhere makes them non-finite and the solution is refused.
+  if (!std::isfinite(x.norm1()) || !std::isfinite(residual.norm1()) || !std::isfinite(a_norm))
+    norms.backward_error = norms.relative_residual = std::numeric_limits<double>::quiet_NaN();
   return norms;
 }
 
@@ -41,6 +46,13 @@ void require_backward_error(const ResidualNorms& norms, double limit, const std:
   if (std::isfinite(norms.backward_error) && norms.backward_error <= limit)
     return;
   std::ostringstream message;
+  if (!std::isfinite(norms.backward_error)) {
+    message << method
+            << " returned a solution that is not finite (NaN or inf): the system is singular "
+               "or its entries under- or overflow (check the material constants, densities and "
+               "loads for extreme values). The result was discarded.";
+    throw RunError(message.str());
+  }
   message << method << " returned a wrong solution: backward error " << norms.backward_error
           << " (relative residual " << norms.relative_residual << ") exceeds the limit " << limit
           << ". The result was discarded.";

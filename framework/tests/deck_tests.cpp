@@ -11,6 +11,7 @@
 #include "framework/deck/describe.hpp"
 #include "framework/deck/parameter_spec.hpp"
 #include "framework/deck/validation.hpp"
+#include "framework/testing/input_error.hpp"
 
 namespace railfe {
 namespace {
@@ -151,6 +152,93 @@ TEST(Deck, MalformedXmlIsReported) {
   EXPECT_NE(message.find("'yes' is not a bool"), std::string::npos) << message;
   message = problem_with(kValid + kValid);
   EXPECT_NE(message.find("given twice"), std::string::npos) << message;
+}
+
+// Teuchos reads "nan" inside an array as 0 and strtod takes "0x10" as 16: neither may pass.
+TEST(Deck, NonFiniteAndHexadecimalNumbersAreRefused) {
+  for (const std::string bad :
+       {"nan", "NaN", "inf", "-inf", "infinity", "0x10", "1e999", "1e", ".", "1.2.3"}) {
+    auto message = problem_with(
+        kValid + R"xml(<Parameter name="Origin" type="Array(double)" value="{1e6, )xml" + bad +
+        R"xml(, 0}"/>)xml");
+    EXPECT_NE(message.find("'" + bad + "' is not a number"), std::string::npos) << message;
+    message = problem_with(R"xml(<Parameter name="Young's modulus" type="double" value=")xml" +
+                           bad + R"xml("/>)xml");
+    EXPECT_NE(message.find("is not a number"), std::string::npos) << bad << ": " << message;
+  }
+  auto message = problem_with(
+      kValid +
+      R"xml(<ParameterList name="Solver"><Parameter name="Maximum iterations" type="int" value="0x10"/></ParameterList>)xml");
+  EXPECT_NE(message.find("'0x10' is not an integer"), std::string::npos) << message;
+  for (const std::string good : {"1", "2.5", "+3.", ".5", "1e-3", "2.1E+11", " 7 "}) {
+    EXPECT_EQ(problem_with(R"xml(<Parameter name="Young's modulus" type="double" value=")xml" +
+                           good + R"xml("/>)xml"),
+              "")
+        << good;
+  }
+}
+
+// A parameter the deck's choices make meaningless is refused, not dropped in silence.
+TEST(Deck, ParameterIgnoredByTheChosenOptionIsRefused) {
+  ParameterSpec spec("Patch.");
+  spec.choice("Geometry", "curvatures", {{"curvatures", "A, B"}, {"semi-axes", "a, b"}}, "How.");
+  spec.real("A", 1.0, "Curvature.", "1/m");
+  spec.real("a", 7e-3, "Semi-axis.", "m");
+  spec.flag("Chart", true, "Draw.");
+  spec.text("Chart title", "", "Title.");
+  spec.text_array("Theories", {"linear"}, "Theories.");
+  spec.integer("Exact grid", 40, "Grid.");
+  spec.only_when("Geometry", {"curvatures"}, {"A"});
+  spec.only_when("Geometry", {"semi-axes"}, {"a"});
+  spec.only_when("Chart", {"true"}, {"Chart title"});
+  spec.only_when("Theories", {"exact"}, {"Exact grid"});
+  auto problem = [&](const std::string& body) {
+    return input_error_of([&] {
+      Deck deck =
+          parse_deck("<ParameterList name=\"deck\">" + body + "</ParameterList>", "d.xml", "");
+      validate_and_complete(*deck.parameters, *spec.list(), deck.source, "Steps/patch");
+      // Validating a completed list again changes nothing: defaults are no deck words.
+      validate_and_complete(*deck.parameters, *spec.list(), deck.source, "Steps/patch");
+    });
+  };
+  auto message = problem(R"xml(<Parameter name="a" type="double" value="0.01"/>)xml");
+  EXPECT_NE(message.find("Steps/patch/a"), std::string::npos) << message;
+  EXPECT_NE(message.find("is used only when Geometry is 'semi-axes', but Geometry is "
+                         "'curvatures' (its default)"),
+            std::string::npos)
+      << message;
+  EXPECT_EQ(problem(R"xml(<Parameter name="Geometry" type="string" value="semi-axes"/>
+                          <Parameter name="a" type="double" value="0.01"/>)xml"),
+            "");
+  message = problem(R"xml(<Parameter name="Chart" type="bool" value="false"/>
+                          <Parameter name="Chart title" type="string" value="x"/>)xml");
+  EXPECT_NE(message.find("used only when Chart is 'true'"), std::string::npos) << message;
+  message = problem(R"xml(<Parameter name="Exact grid" type="int" value="20"/>)xml");
+  EXPECT_NE(message.find("used only when Theories contains 'exact', but Theories holds 'linear'"),
+            std::string::npos)
+      << message;
+  EXPECT_EQ(problem(R"xml(<Parameter name="Theories" type="Array(string)" value="{linear, exact}"/>
+                          <Parameter name="Exact grid" type="int" value="20"/>)xml"),
+            "");
+}
+
+// Teuchos' own words ("Bad Parameter", "Can't find converter", "not a valid array
+// represntation") name no parameter: railfe catches these first.
+TEST(Deck, MalformedEntriesNameTheirParameter) {
+  auto message = problem_with(
+      kValid + R"xml(<ParameterList name="Solver"><Parameter name="Verbose"/></ParameterList>)xml");
+  EXPECT_NE(message.find("'Solver/Verbose': <Parameter> without a type attribute"),
+            std::string::npos)
+      << message;
+  message = problem_with(kValid + R"xml(<Parameter name="Method" type="foo" value="cg"/>)xml");
+  EXPECT_NE(message.find("'Method': unknown type 'foo'; allowed: double, int"), std::string::npos)
+      << message;
+  message = problem_with(kValid + R"xml(<ParameterList name="Loads"><ParameterList name="l">
+      <Parameter name="Node set" type="Array(string)" value="top"/></ParameterList></ParameterList>)xml");
+  EXPECT_NE(message.find("'Loads/l/Node set': malformed parameter: array value 'top' is not "
+                         "written as {a, b, c}"),
+            std::string::npos)
+      << message;
 }
 
 TEST(Deck, RelativePathsStartAtTheDeck) {

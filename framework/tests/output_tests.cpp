@@ -7,13 +7,16 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
+#include "framework/base/error.hpp"
 #include "framework/mesh/box_generator.hpp"
 #include "framework/mesh/mesh_readers.hpp"
 #include "framework/output/csv_writer.hpp"
 #include "framework/output/exodus_writer.hpp"
 #include "framework/output/field_gather.hpp"
+#include "framework/output/finite_check.hpp"
 #include "framework/output/output_directory.hpp"
 #include "framework/output/run_summary.hpp"
 
@@ -103,6 +106,83 @@ TEST(OutputDirectory, FilesAppearOnlyWhenTheRunSucceeds) {
     OutputDirectory output(dir.string(), comm);
     EXPECT_FALSE(fs::exists(dir / "FAILED.txt"));
     EXPECT_FALSE(fs::exists(dir / "other.csv.part"));
+  }
+}
+
+// A successful run never leaves NaN or inf in a result: the file, row and column are named and
+// the files keep their .part names.
+TEST(OutputDirectory, NonFiniteResultsFailTheRun) {
+  const Communicator comm;
+  const auto dir = shared_scratch("non_finite", comm);
+  OutputDirectory output(dir.string(), comm);
+  const std::string good = output.staging_path("good.csv");
+  const std::string bad = output.staging_path("forces.csv");
+  if (comm.is_root()) {
+    std::ofstream(good) << "theory,Fx_N\nlinear,1.5e3\n";
+    std::ofstream(bad) << "theory,Fx_N,Fy_N\nlinear,1.5e3,2\npolach,3,-nan\n";
+  }
+  try {
+    output.finalize();
+    FAIL() << "finalize accepted a NaN";
+  } catch (const RunError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("forces.csv, row 2, column 'Fy_N': -nan"), std::string::npos) << message;
+  }
+  comm.barrier();
+  EXPECT_TRUE(fs::exists(bad));
+  EXPECT_FALSE(fs::exists(dir / "forces.csv"));
+  EXPECT_EQ(find_non_finite(good), "");
+  if (comm.is_root()) {
+    const std::string summary = (dir / "summary.json.part").string();
+    std::ofstream(summary) << "{\"Solver\": {\"relative residual\": inf}}\n";
+    EXPECT_EQ(find_non_finite(summary), "line 1: inf");
+    // Words that merely contain the letters are no NaN.
+    std::ofstream(summary) << "{\"status\": \"nano, infinite, not unique\"}\n";
+    EXPECT_EQ(find_non_finite(summary), "");
+  }
+}
+
+// One step's files never overwrite another's.
+TEST(OutputDirectory, AStepCannotOverwriteAnotherStepsFile) {
+  const Communicator comm;
+  const auto dir = shared_scratch("owners", comm);
+  OutputDirectory output(dir.string(), comm);
+  output.begin_step("first");
+  const std::string path = output.staging_path("patch_forces.csv");
+  EXPECT_EQ(output.staging_path("patch_forces.csv"), path);  // the same step may ask again
+  output.begin_step("second");
+  try {
+    output.staging_path("patch_forces.csv");
+    FAIL() << "a second step was given the first step's file";
+  } catch (const RunError& error) {
+    EXPECT_NE(std::string(error.what())
+                  .find("step 'second' would overwrite 'patch_forces.csv', "
+                        "written by step 'first'"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
+// NaN in an Exodus field is found by variable and time step.
+TEST(OutputDirectory, NonFiniteExodusFieldsAreFound) {
+  const Communicator comm;
+  const auto dir = shared_scratch("non_finite_exodus", comm);
+  if (comm.is_root()) {
+    fs::create_directories(dir);
+    BoxSpec spec;
+    spec.elements = {2, 1, 1};
+    const Mesh mesh = generate_box(spec);
+    const std::string path = (dir / "result.exo").string();
+    {
+      ExodusWriter writer(path, mesh, "test", {"ux"}, {"stress"}, true);
+      std::vector<double> ux(mesh.n_nodes(), 1.0), stress(mesh.n_elements(), 2.0);
+      writer.write_step(0.0, {ux}, {stress});
+      EXPECT_EQ(find_non_finite(path), "");
+      stress[1] = std::numeric_limits<double>::infinity();
+      writer.write_step(1.0, {ux}, {stress});
+      writer.close();
+    }
+    EXPECT_EQ(find_non_finite(path), "element variable 'stress' at time step 2: inf");
   }
 }
 

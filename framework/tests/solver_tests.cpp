@@ -2,6 +2,8 @@
 // is reported, and a wrong answer from a library is caught rather than returned.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <Amesos2.hpp>
 #include <Teuchos_ParameterList.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -70,8 +72,10 @@ Teuchos::ParameterList solver_list(const std::string& method, const std::string&
                                    int iterations = 2000) {
   Teuchos::ParameterList list;
   list.set("Method", method);
-  list.set("Preconditioner", preconditioner);
-  list.set("Maximum iterations", iterations);
+  if (method == "cg" || method == "gmres") {  // direct methods refuse Krylov settings
+    list.set("Preconditioner", preconditioner);
+    list.set("Maximum iterations", iterations);
+  }
   validate_and_complete(list, *linear_solver_parameters().list(), "test", "Linear solver");
   return list;
 }
@@ -193,6 +197,36 @@ TEST(Solvers, WrongDistributedSolveIsCaught) {
   TpetraVector solution(map);
   const SolveReport report = solver->solve(*b->getVector(0), solution);
   EXPECT_LT(report.backward_error, 1e-14);
+}
+
+// A solution with a NaN or inf anywhere fails the check, whatever its infinity norms say (they
+// take maxima, which pass over NaN).
+TEST(SolutionCheck, NonFiniteSolutionIsRefused) {
+  const Communicator comm;
+  const GlobalIndex n = 8;
+  auto map = Teuchos::rcp(new TpetraMap(n, 0, comm.teuchos()));
+  auto A = Teuchos::rcp(new TpetraMatrix(map, 1));
+  for (LocalIndex i = 0; i < static_cast<LocalIndex>(map->getNodeNumElements()); ++i) {
+    const GlobalIndex row = map->getGlobalElement(i);
+    const double one = 1.0;
+    A->insertGlobalValues(row, Teuchos::ArrayView<const GlobalIndex>(&row, 1),
+                          Teuchos::ArrayView<const double>(&one, 1));
+  }
+  A->fillComplete();
+  TpetraVector b(map), x(map);
+  b.putScalar(1.0);
+  x.putScalar(1.0);
+  EXPECT_NO_THROW(require_backward_error(residual_norms(*A, x, b), 1e-12, "test"));
+  if (map->isNodeGlobalElement(n - 1))
+    x.replaceGlobalValue(n - 1, std::numeric_limits<double>::quiet_NaN());
+  const ResidualNorms norms = residual_norms(*A, x, b);
+  EXPECT_TRUE(std::isnan(norms.backward_error));
+  try {
+    require_backward_error(norms, 1e-12, "test");
+    FAIL() << "a NaN solution passed the check";
+  } catch (const RunError& error) {
+    EXPECT_NE(std::string(error.what()).find("not finite"), std::string::npos) << error.what();
+  }
 }
 
 }  // namespace

@@ -33,7 +33,8 @@ void add_solid_condition_parameters(ParameterSpec& spec) {
   spec.named_sublists("Nodal forces", nodal, "Forces at nodes.");
 
   spec.real_array("Gravity", {0, 0, 0},
-                  "Gravitational acceleration; every solid carries density × gravity.", "m/s^2", 3);
+                  "Gravitational acceleration; every solid carries density × gravity.", "m/s^2", 3,
+                  Range::closed(-1e6, 1e6));
 
   ParameterSpec tie("Ties two node sets: each slave node follows the master node at its place.");
   tie.required_text("Master node set", "Nodes that remain unknowns.");

@@ -23,11 +23,14 @@ ParameterSpec contact_patch_parameters() {
   spec.real("Young's modulus", 210e9, "Of both bodies.", "Pa", Range::positive());
   spec.real("Poisson's ratio", 0.3, "Of both bodies (Kalker's table covers 0 to 0.5).", "",
             Range::closed(0.0, 0.5));
+  // Creepages beyond full sliding (|ξ|, |η| > 1) or spins of a patch turned far past the
+  // flange's steepest angle over a 0.2 m radius have no rolling-contact meaning.
   spec.real_array("Longitudinal creepage", {1e-3},
-                  "ξ per case; arrays of length 1 are repeated to the longest.", "", 0);
-  spec.real_array("Lateral creepage", {0}, "η per case.", "", 0);
-  spec.real_array("Spin creepage", {0}, "φ per case.", "1/m", 0);
-  spec.real("Static friction", 0.3, "μs (Coulomb: also μd).", "", Range::non_negative());
+                  "ξ per case; arrays of length 1 are repeated to the longest.", "", 0,
+                  Range::closed(-1, 1));
+  spec.real_array("Lateral creepage", {0}, "η per case.", "", 0, Range::closed(-1, 1));
+  spec.real_array("Spin creepage", {0}, "φ per case.", "1/m", 0, Range::closed(-100, 100));
+  spec.real("Static friction", 0.3, "μs (Coulomb: also μd).", "", Range::open_closed(0, 2));
   spec.real("Dynamic friction", -1, "μd for falling friction (negative = μs: Coulomb).", "");
   spec.real("Friction decay", 0, "c in μ = μd + (μs − μd) exp(−c |v|).", "s/m",
             Range::non_negative());
@@ -59,11 +62,20 @@ ParameterSpec contact_patch_parameters() {
                "1.5 elements) beyond the Hertz ellipse.",
                Range::at_least(8));
   spec.flag("Traction fields", true,
-            "Write patch_tractions.csv: per FASTSIM and exact case, every element's position, "
+            "Write <step>_tractions.csv: per FASTSIM and exact case, every element's position, "
             "pressure, tractions and state.");
   spec.flag("Chart", true,
-            "Draw patch_creep_forces.png and patch_tractions.png (needs python3 with "
+            "Draw <step>_creep_forces.png and <step>_tractions.png (needs python3 with "
             "matplotlib).");
+  spec.only_when("Geometry", {"curvatures"}, {"A", "B"});
+  spec.only_when("Geometry", {"semi-axes"}, {"a", "b"});
+  spec.only_when("Theories", {"exact"}, {"Exact grid", "Dynamic friction", "Friction decay"});
+  spec.only_when("Theories", {"exact", "polach"}, {"Rolling speed"});
+  spec.only_when("Theories", {"fastsim"}, {"FASTSIM cells", "FASTSIM bound"});
+  spec.only_when("Theories", {"fastsim", "exact"}, {"Traction fields"});
+  spec.only_when("Theories", {"polach"},
+                 {"Polach adhesion reduction", "Polach slip reduction", "Polach friction ratio",
+                  "Polach friction decay"});
   return spec;
 }
 

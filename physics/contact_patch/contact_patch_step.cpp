@@ -37,6 +37,23 @@ double seconds_per_call(F&& f) {
   return elapsed / calls;
 }
 
+// The Hertz patch the deck describes (cheap: computed at check time too, so that every limit the
+// theories have is known before anything runs).
+HertzContact deck_hertz(const Teuchos::ParameterList& p) {
+  const double E = p.get<double>("Young's modulus"), nu = p.get<double>("Poisson's ratio");
+  const double modulus = contact_modulus({E, nu}, {E, nu});
+  const double load = p.get<double>("Normal load");
+  return p.get<std::string>("Geometry") == "curvatures"
+             ? hertz_contact(p.get<double>("A"), p.get<double>("B"), modulus, load)
+             : hertz_from_semi_axes(p.get<double>("a"), p.get<double>("b"), modulus, load);
+}
+
+// A value a theory does not define (Polach's spin moment, the linear theory's adhesion share, the
+// forces of a case without a unique steady state) is an empty cell, never NaN.
+std::string cell(double value) {
+  return std::isfinite(value) ? CsvWriter::format(value) : std::string();
+}
+
 }  // namespace
 
 ContactPatchStep::ContactPatchStep(const Teuchos::ParameterList& parameters)
@@ -49,6 +66,9 @@ void ContactPatchStep::check(const CheckContext& context) {
     if (std::find(kTheories.begin(), kTheories.end(), name) == kTheories.end())
       throw_input_error(source, context.path + "/Theories", "unknown theory '" + name + "'",
                         "linear, shen-hedrick-elkins, polach, fastsim, table, exact");
+    if (std::find(theories_.begin(), theories_.end(), name) != theories_.end())
+      throw_input_error(source, context.path + "/Theories", "names '" + name + "' twice",
+                        "each theory once");
     theories_.push_back(name);
   }
   const char* keys[3] = {"Longitudinal creepage", "Lateral creepage", "Spin creepage"};
@@ -77,23 +97,42 @@ void ContactPatchStep::check(const CheckContext& context) {
       parameters_->get<double>("Polach adhesion reduction"))
     throw_input_error(source, context.path + "/Polach slip reduction",
                       "exceeds Polach adhesion reduction", "0 < k_S <= k_A <= 1");
-  if (parameters_->get<std::string>("Geometry") == "semi-axes") {
-    const double ratio = parameters_->get<double>("a") / parameters_->get<double>("b");
-    if (ratio < 0.1 || ratio > 10)
-      throw_input_error(source, context.path + "/a", "a / b outside Kalker's table",
-                        "a / b from 0.1 to 10");
+  const bool semi_axes = parameters_->get<std::string>("Geometry") == "semi-axes";
+  const HertzContact h = deck_hertz(*parameters_);
+  const double ratio = h.a / h.b;
+  const std::string shape = semi_axes ? "/a" : "/A";
+  const std::string shape_names = semi_axes ? "a and b" : "A and B";
+  if (!(ratio >= 0.1 && ratio <= 10))
+    throw_input_error(
+        source, context.path + shape,
+        "gives a Hertz ellipse with a / b = " + std::to_string(ratio) + ", outside Kalker's table",
+        shape_names + " giving a / b from 0.1 to 10");
+  if (std::find(theories_.begin(), theories_.end(), "table") != theories_.end()) {
+    const CreepTableAxes& table = CreepTable::shipped().axes();
+    const double nu = parameters_->get<double>("Poisson's ratio");
+    if (std::abs(nu - table.poisson) > 1e-6)
+      throw_input_error(source, context.path + "/Poisson's ratio",
+                        "is " + std::to_string(nu) +
+                            ", but the creep table (theory 'table') was "
+                            "made for " +
+                            std::to_string(table.poisson),
+                        std::to_string(table.poisson) + ", or drop 'table' from Theories");
+    if (ratio < table.ratios.front() * (1 - 1e-12) || ratio > table.ratios.back() * (1 + 1e-12))
+      throw_input_error(source, context.path + shape,
+                        "gives a / b = " + std::to_string(ratio) +
+                            ", outside the creep table's range (theory 'table')",
+                        shape_names + " giving a / b from " + std::to_string(table.ratios.front()) +
+                            " to " + std::to_string(table.ratios.back()) +
+                            ", or drop 'table' from Theories");
   }
 }
 
 void ContactPatchStep::run(StepContext& context) {
   const Teuchos::ParameterList& p = *parameters_;
   const double E = p.get<double>("Young's modulus"), nu = p.get<double>("Poisson's ratio");
-  const double G = E / (2 * (1 + nu)), modulus = contact_modulus({E, nu}, {E, nu});
+  const double G = E / (2 * (1 + nu));
   const double load = p.get<double>("Normal load");
-  const HertzContact h =
-      p.get<std::string>("Geometry") == "curvatures"
-          ? hertz_contact(p.get<double>("A"), p.get<double>("B"), modulus, load)
-          : hertz_from_semi_axes(p.get<double>("a"), p.get<double>("b"), modulus, load);
+  const HertzContact h = deck_hertz(p);
   if (h.a / h.b < 0.1 || h.a / h.b > 10)
     throw RunError(context.path + ": the Hertz ellipse's a / b = " + std::to_string(h.a / h.b) +
                    " lies outside Kalker's table (0.1 to 10)");
@@ -130,7 +169,10 @@ void ContactPatchStep::run(StepContext& context) {
   }
 
   const bool root = context.model.comm().is_root();
-  CsvWriter forces(context.output.staging_path("patch_forces.csv"),
+  // Every file carries the step's name, so two patch steps in one deck keep their results apart.
+  const std::string forces_file = context.step_name + "_forces.csv";
+  const std::string tractions_file = context.step_name + "_tractions.csv";
+  CsvWriter forces(context.output.staging_path(forces_file),
                    {"theory", "case", "xi", "eta", "phi_per_m", "FN_N", "Fx_N", "Fy_N", "Mz_Nm",
                     "a_m", "b_m", "pmax_Pa", "adhesion_fraction", "status", "time_s"},
                    root);
@@ -138,7 +180,7 @@ void ContactPatchStep::run(StepContext& context) {
   std::unique_ptr<CsvWriter> tractions;
   if (fields)
     tractions = std::make_unique<CsvWriter>(
-        context.output.staging_path("patch_tractions.csv"),
+        context.output.staging_path(tractions_file),
         std::vector<std::string>{"theory", "case", "x_m", "y_m", "p_Pa", "qx_Pa", "qy_Pa", "state"},
         root);
   auto field = [&](const std::string& theory, std::size_t k, double x, double y, double pressure,
@@ -213,12 +255,16 @@ void ContactPatchStep::run(StepContext& context) {
             field(theory, k, g.x(e % g.mx), g.y(e / g.mx), patch.normal.pressure[e], t.qx[e],
                   t.qy[e], t.adhesion[e]);
       }
+      // Forces are NaN only where the theory has none (Polach's moment) or the case has no
+      // unique steady state (its status says so); anything else non-finite is a failure.
+      if (status == "ok" && !(std::isfinite(f.Fx) && std::isfinite(f.Fy)))
+        throw RunError(context.path + ": theory '" + theory + "', case " + std::to_string(k) +
+                       " gave non-finite creep forces");
       forces.write_row({theory, std::to_string(k), CsvWriter::format(creep.longitudinal),
                         CsvWriter::format(creep.lateral), CsvWriter::format(creep.spin),
-                        CsvWriter::format(load), CsvWriter::format(f.Fx), CsvWriter::format(f.Fy),
-                        CsvWriter::format(f.Mz), CsvWriter::format(h.a), CsvWriter::format(h.b),
-                        CsvWriter::format(pmax), CsvWriter::format(adhesion), status,
-                        CsvWriter::format(seconds)});
+                        CsvWriter::format(load), cell(f.Fx), cell(f.Fy), cell(f.Mz),
+                        CsvWriter::format(h.a), CsvWriter::format(h.b), CsvWriter::format(pmax),
+                        cell(adhesion), status, CsvWriter::format(seconds)});
     }
     progress.update(static_cast<double>(k + 1));
   }
@@ -236,10 +282,10 @@ void ContactPatchStep::run(StepContext& context) {
     context.summary.add(section, "exact cases without a unique steady state", refused);
   if (p.get<bool>("Chart"))
     draw_chart(context, section, "contact_patch_chart.py",
-               {context.output.staging_path("patch_forces.csv"),
-                fields ? context.output.staging_path("patch_tractions.csv") : std::string("-"),
-                context.output.staging_path("patch_creep_forces.png"),
-                context.output.staging_path("patch_tractions.png")});
+               {context.output.staging_path(forces_file),
+                fields ? context.output.staging_path(tractions_file) : std::string("-"),
+                context.output.staging_path(context.step_name + "_creep_forces.png"),
+                context.output.staging_path(context.step_name + "_tractions.png")});
 }
 
 }  // namespace railfe

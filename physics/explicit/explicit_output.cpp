@@ -187,8 +187,16 @@ bool ExplicitRecorder::record(bool force_rows) {
     // The first steps after an impulsive start (a velocity jump at t = 0) carry an O(1)
     // relative error on tiny energies; real divergence takes longer to show.
     const bool judged = step >= kSettlingSteps;
+    // Blow-up is exponential growth of the stored energy far past what the loads and the start
+    // put in; a stable step only oscillates the measured energy (a bounded error), which must
+    // not stop a correct run.
+    energy_put_in_ =
+        std::max(energy_put_in_, std::abs(solver_.initial_energy()) + std::abs(b.external_work));
+    const double stored = b.kinetic + b.internal + b.hourglass;
+    growth_ = stored / std::max(energy_put_in_, 1e-300);
     if (!std::isfinite(b.kinetic + b.internal + b.hourglass + b.damping + b.external_work) ||
-        (judged && !(std::abs(b.error) <= settings_.energy_error_limit)))
+        (judged && !(std::abs(b.error) <= settings_.energy_error_limit) &&
+         !(growth_ <= settings_.energy_growth_limit)))
       return false;
     const std::vector<double> row = {solver_.time(),
                                      static_cast<double>(step),
@@ -303,7 +311,8 @@ void ExplicitRecorder::finish() {
 }
 
 std::vector<double> ExplicitRecorder::state() const {
-  std::vector<double> values = {next_snapshot_, static_cast<double>(energy_rows_.size()),
+  std::vector<double> values = {next_snapshot_, energy_put_in_,
+                                static_cast<double>(energy_rows_.size()),
                                 static_cast<double>(history_rows_.size())};
   for (const auto* rows : {&energy_rows_, &history_rows_})
     for (const auto& row : *rows) {
@@ -321,6 +330,7 @@ std::vector<double> ExplicitRecorder::state() const {
 void ExplicitRecorder::restore(const std::vector<double>& values) {
   std::size_t k = 0;
   next_snapshot_ = values.at(k++);
+  energy_put_in_ = values.at(k++);
   const auto n_energy = static_cast<std::size_t>(values.at(k++));
   const auto n_history = static_cast<std::size_t>(values.at(k++));
   energy_rows_.clear();

@@ -51,11 +51,14 @@ class ExplicitRecorder {
                    const std::string& step_name, const std::string& title, bool write_exodus);
   ~ExplicitRecorder();
   /// Samples histories at the solver's current state and writes the rows that are due
-  /// (collective). Returns false, writing nothing, when a value is not finite or the energy
-  /// error exceeds the deck's limit (the run must stop).
+  /// (collective). Returns false, writing nothing, when a value is not finite or the run blows
+  /// up: the energy error exceeds its limit and the stored energy has grown past the growth
+  /// limit times the energy put in (the run must stop).
   bool record(bool force_rows);
   /// The energy balance at the last energy row.
   const EnergyBalance& last_balance() const;
+  /// Stored energy over the energy put in (initial energy and work of the loads), last row.
+  double energy_growth() const { return growth_; }
   /// Writes an Exodus snapshot if one is due at the current time (collective); \p last forces it.
   void snapshot(bool last);
   /// Writes the measurements and wave speeds and closes every file (collective).
@@ -83,6 +86,8 @@ class ExplicitRecorder {
   std::vector<std::vector<double>> energy_rows_, history_rows_;
   std::unique_ptr<EnergyBalance> balance_;
   double next_snapshot_ = 0;
+  double energy_put_in_ = 0;  // initial energy + largest |work of the loads| so far
+  double growth_ = 0;         // stored energy / energy_put_in_ at the last energy row
   long long last_energy_step_ = -1, last_history_step_ = -1;
   bool root_;
 };

@@ -145,6 +145,10 @@ ParameterSpec explicit_parameters() {
       "Explicit dynamics of hex8 solids and discrete parts: central difference "
       "(Newmark beta = 0, gamma = 1/2) with a lumped mass.");
   spec.required_real("End time", "Simulated duration.", "s", Range::positive());
+  spec.real("Maximum steps", 1e8,
+            "Step budget: a run whose End time needs more steps (estimated from the smallest "
+            "element before it starts) is refused, and one that reaches it stops.",
+            "", Range::at_least(1));
   spec.real("Time step", 0.0,
             "Fixed step; 0 = automatic (Safety factor x the stable step, recomputed as the mesh "
             "deforms). A fixed step above the stable limit is refused unless Allow unstable step.",
@@ -155,8 +159,15 @@ ParameterSpec explicit_parameters() {
             "Run a fixed Time step above the stable limit (to study instability); the run stops "
             "when the energy balance fails.");
   spec.real("Energy error limit", 0.1,
-            "Stop with an error when |energy_error| exceeds this (blow-up detection).", "",
-            Range::positive());
+            "Blow-up detection, first condition: |energy_error| above this. A stable central "
+            "difference step oscillates the measured energy (by up to 1 / (1 - (omega dt / 2)^2)), "
+            "so the error alone never stops a run.",
+            "", Range::positive());
+  spec.real("Energy growth limit", 100,
+            "Blow-up detection, second condition: the stored energy (kinetic, strain, hourglass) "
+            "above this multiple of the energy put in (initial energy plus the largest work of "
+            "the loads so far). A run stops only when both conditions hold.",
+            "", Range::open(1, 1e300));
   spec.real("Rayleigh mass damping", 0.0, "alpha of C = alpha M.", "1/s", Range::non_negative());
   spec.text("Start from", "",
             "A previous statics step whose displacements start this one (preload), or ''.");
@@ -176,6 +187,7 @@ ParameterSpec explicit_parameters() {
              Range::non_negative());
   solid.real("Bulk viscosity quadratic", 1.5, "Quadratic bulk viscosity coefficient (0 = off).", "",
              Range::non_negative());
+  solid.only_when("Integration", {"one point"}, {"Hourglass control", "Hourglass coefficient"});
   spec.sublist("Solid", solid, "Hex8 formulation.");
   load_parameters(spec);
   spec.sublist("Discrete parts", discrete_parameters(), "Masses, rigid bodies, springs.");
@@ -397,10 +409,23 @@ ExplicitSettings read_explicit_settings(const Teuchos::ParameterList& step, cons
                                         const std::string& path) {
   ExplicitSettings settings;
   settings.end_time = step.get<double>("End time");
+  settings.maximum_steps = step.get<double>("Maximum steps");
   settings.time_step = step.get<double>("Time step");
   settings.safety_factor = step.get<double>("Safety factor");
+  // Time step is a number, so only_when cannot tie these to it: a fixed step makes the safety
+  // factor meaningless, an automatic one the permission to exceed the limit.
+  const bool fixed_step = settings.time_step > 0;
+  const char* ignored = fixed_step ? "Safety factor" : "Allow unstable step";
+  if (!step.getEntry(ignored).isDefault())
+    throw_input_error(deck, path + "/" + ignored,
+                      std::string("is used only with ") +
+                          (fixed_step ? "an automatic step (Time step 0)" : "a fixed Time step") +
+                          ", so the value would be ignored",
+                      std::string("remove it, or ") +
+                          (fixed_step ? "set Time step to 0" : "give a fixed Time step"));
   settings.allow_unstable_step = step.get<bool>("Allow unstable step");
   settings.energy_error_limit = step.get<double>("Energy error limit");
+  settings.energy_growth_limit = step.get<double>("Energy growth limit");
   settings.rayleigh_mass = step.get<double>("Rayleigh mass damping");
   settings.start_from = step.get<std::string>("Start from");
   const auto& solid = step.sublist("Solid");

@@ -115,10 +115,12 @@ struct ElementHistorySpec {
 /// The settings of one explicit step.
 struct ExplicitSettings {
   double end_time = 0;                    ///< s
+  double maximum_steps = 1e8;             ///< step budget (refused before, stopped during)
   double time_step = 0;                   ///< fixed step (s); 0 = automatic
   double safety_factor = 0.9;             ///< automatic step = factor × stable step
   bool allow_unstable_step = false;       ///< run a fixed step above the stable limit
-  double energy_error_limit = 0.1;        ///< stop when |energy error| exceeds it
+  double energy_error_limit = 0.1;        ///< blow-up: |energy error| above it, and...
+  double energy_growth_limit = 100;       ///< ...stored energy above this x the energy put in
   double rayleigh_mass = 0;               ///< α of C = α M (1/s)
   SolidKernelSettings kernel;             ///< hex8 formulation
   std::string start_from;                 ///< a previous step whose displacement starts this one

@@ -89,6 +89,8 @@ class ExplicitSolver {
   const SolidElements& elements() const { return elements_; }
   /// Total mass of the model (kg, summed over ranks).
   double total_mass() const;
+  /// Kinetic, internal and hourglass energy at the start (the balance's reference).
+  double initial_energy() const { return initial_energy_; }
   /// The state to checkpoint.
   SolverState state() const;
   /// Restores a checkpointed state (throws RunError if it does not fit this partition).

@@ -1,6 +1,8 @@
 #include "physics/explicit/explicit_step.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "framework/assembly/dof_map.hpp"
@@ -23,16 +25,19 @@ std::string seconds_text(double value) {
 
 // The blow-up message: where the run failed, how, and what the step was. \p balance is null when
 // the forces themselves failed (non-finite, or elements turned inside out).
-std::string blow_up_message(const ExplicitSolver& solver, const EnergyBalance* balance, double dt,
-                            double stable_step, double limit) {
+std::string blow_up_message(const ExplicitSolver& solver, const ExplicitRecorder* recorder,
+                            double dt, double stable_step, const ExplicitSettings& settings) {
   std::ostringstream text;
   text.precision(4);
   text << "the solution is growing without bound at t = " << solver.time() << " s (step "
        << solver.n_steps() << "): ";
-  if (balance) {
-    text << "the energy balance failed, energy error " << balance->error << " beyond the limit "
-         << limit << " (kinetic " << balance->kinetic << " J, internal " << balance->internal
-         << " J, external work " << balance->external_work << " J)";
+  if (recorder) {
+    const EnergyBalance& balance = recorder->last_balance();
+    text << "the energy balance failed, energy error " << balance.error << " beyond the limit "
+         << settings.energy_error_limit << " and the stored energy " << recorder->energy_growth()
+         << " x the energy put in, beyond the growth limit " << settings.energy_growth_limit
+         << " (kinetic " << balance.kinetic << " J, internal " << balance.internal
+         << " J, external work " << balance.external_work << " J)";
   } else {
     text << "the energy balance failed with non-finite forces or inverted elements";
   }
@@ -53,6 +58,32 @@ void refuse_unstable_step(double step, double limit, const std::string& location
           << "); use a step up to the limit, 0 for automatic (Safety factor x limit), or "
              "Allow unstable step true to study the instability";
   throw RunError(problem.str());
+}
+
+// A cheap lower estimate of the stable step before anything is assembled: the shortest element
+// edge over the fastest dilatational wave speed. It only has to be good to a factor of two for
+// the step budget; the run itself uses the exact limit.
+double estimated_stable_step(const Mesh& mesh, const MaterialTable& materials) {
+  static const int edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                                   {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+  double step = std::numeric_limits<double>::infinity();
+  for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
+    const auto& block = mesh.blocks[b];
+    const ElasticMaterial& m = materials.of_block(static_cast<int>(b));
+    const double nu = m.poisson;
+    const double speed = std::sqrt(m.young * (1 - nu) / (m.density * (1 + nu) * (1 - 2 * nu)));
+    for (GlobalIndex e = 0; e < block.n_elements(); ++e) {
+      const GlobalIndex* nodes = block.element_nodes(e);
+      double shortest = std::numeric_limits<double>::infinity();
+      for (const auto& edge : edges) {
+        const double* a = &mesh.coordinates[3 * static_cast<std::size_t>(nodes[edge[0]])];
+        const double* c = &mesh.coordinates[3 * static_cast<std::size_t>(nodes[edge[1]])];
+        shortest = std::min(shortest, std::hypot(a[0] - c[0], a[1] - c[1], a[2] - c[2]));
+      }
+      step = std::min(step, shortest / speed);
+    }
+  }
+  return step;
 }
 
 }  // namespace
@@ -76,6 +107,23 @@ void ExplicitStep::check(const CheckContext& context) {
     if (!(materials_->of_block(static_cast<int>(b)).density > 0))
       throw_input_error(deck, "Materials", "block '" + mesh.blocks[b].name + "' has no density",
                         "a positive Density for every block of an explicit step");
+  }
+  // A run that would take more steps than the budget is refused before anything runs, with the
+  // figures (End time 2e9 s, or a step of 1e-148 s from a modulus of 1e308).
+  const double step_estimate =
+      settings_->time_step > 0
+          ? settings_->time_step
+          : settings_->safety_factor * estimated_stable_step(mesh, *materials_);
+  const double steps_needed = settings_->end_time / step_estimate;
+  if (!(steps_needed <= settings_->maximum_steps)) {
+    std::ostringstream problem;
+    problem.precision(3);
+    problem << "End time " << settings_->end_time << " s at a step of about " << step_estimate
+            << " s needs about " << steps_needed << " steps, more than Maximum steps "
+            << settings_->maximum_steps;
+    throw_input_error(deck, context.path + "/End time", problem.str(),
+                      "a shorter End time, a larger Maximum steps, or material constants and a "
+                      "mesh that allow a larger step");
   }
   if (!settings_->start_from.empty()) {
     const auto& steps = context.model.deck().parameters->sublist("Steps");
@@ -156,13 +204,11 @@ void ExplicitStep::run(StepContext& context) {
       dt = remaining;
     solver.step(dt);
     if (!(solver.stable_step() > 0) || !std::isfinite(solver.stable_step()))
-      throw RunError(
-          path + ": " +
-          blow_up_message(solver, nullptr, dt, initial_stable_step, settings.energy_error_limit));
+      throw RunError(path + ": " +
+                     blow_up_message(solver, nullptr, dt, initial_stable_step, settings));
     if (!recorder.record(false))
       throw RunError(path + ": " +
-                     blow_up_message(solver, &recorder.last_balance(), dt, initial_stable_step,
-                                     settings.energy_error_limit));
+                     blow_up_message(solver, &recorder, dt, initial_stable_step, settings));
     recorder.snapshot(false);
     const long long n = solver.n_steps();
     if (settings.checkpoint_interval > 0 && n % settings.checkpoint_interval == 0) {
@@ -170,6 +216,12 @@ void ExplicitStep::run(StepContext& context) {
       write_checkpoint(checkpoint_path, comm.n_ranks(),
                        {state.scalars, state.arrays, state.discrete, recorder.state()});
     }
+    if (static_cast<double>(n) >= settings.maximum_steps &&
+        solver.time() < settings.end_time * (1 - 1e-12))
+      throw RunError(path + ": reached Maximum steps (" + std::to_string(n) +
+                     ") at t = " + seconds_text(solver.time()) + " of End time " +
+                     seconds_text(settings.end_time) +
+                     "; the stable step shrank as the mesh deformed, or the budget is too small");
     if (settings.stop_after_steps > 0 && n - first_step >= settings.stop_after_steps)
       throw RunError(path + ": stopped after " + std::to_string(settings.stop_after_steps) +
                      " steps as Checkpoint/Stop after steps asks; resume with Checkpoint/Restart "
@@ -180,8 +232,7 @@ void ExplicitStep::run(StepContext& context) {
   const double loop_seconds = loop_clock.seconds();
   if (!recorder.record(true))
     throw RunError(path + ": " +
-                   blow_up_message(solver, &recorder.last_balance(), dt, initial_stable_step,
-                                   settings.energy_error_limit));
+                   blow_up_message(solver, &recorder, dt, initial_stable_step, settings));
   recorder.snapshot(true);
   recorder.finish();
 
@@ -209,6 +260,7 @@ void ExplicitStep::run(StepContext& context) {
   if (restarted)
     summary.add(section, "resumed from checkpoint at step", static_cast<double>(first_step));
   summary.add(section, "energy error at end", recorder.last_balance().error);
+  summary.add(section, "stored energy / energy put in, at end", recorder.energy_growth());
   summary.add(section, "time: setup", setup_seconds, "s");
   summary.add(section, "time: stepping", loop_seconds, "s");
   summary.add(section, "time per element-step (wall x ranks)",

@@ -10,9 +10,12 @@ namespace railfe {
 
 ParameterSpec materials_parameters() {
   ParameterSpec material("An isotropic linear elastic material.");
-  material.required_real("Young's modulus", "Young's modulus E.", "Pa", Range::positive());
+  // From soft rubber to diamond: outside, the stiffness under- or overflows in double precision
+  // long before the model means anything.
+  material.required_real("Young's modulus", "Young's modulus E.", "Pa", Range::closed(1.0, 1e13));
   material.required_real("Poisson's ratio", "Poisson's ratio nu.", "", Range::open(-1.0, 0.5));
-  material.required_real("Density", "Mass density rho.", "kg/m^3", Range::positive());
+  // Up to 1e9 leaves room for explicit mass scaling (steel x 1e5).
+  material.required_real("Density", "Mass density rho.", "kg/m^3", Range::open_closed(0, 1e9));
   material.required_text_array("Blocks", "Element blocks made of this material.");
   // The section is itself the list of user-named materials.
   ParameterSpec section("Materials, one sublist each, under a name of your choice.");

@@ -44,7 +44,7 @@ def creep_chart(forces, png):
 
 def traction_chart(forces, tractions, png):
     shares = {int(r["case"]): float(r["adhesion_fraction"]) for r in forces
-              if r["theory"] in ("exact", "fastsim") and r["adhesion_fraction"] != "nan"}
+              if r["theory"] in ("exact", "fastsim") and r["adhesion_fraction"] not in ("", "nan")}
     last = min(shares, key=lambda k: abs(shares[k] - 0.5))
     theories = [t for t in ("fastsim", "exact") if any(r["theory"] == t for r in tractions)]
     fig, axes = plt.subplots(1, len(theories), figsize=(6 * len(theories), 5), squeeze=False)

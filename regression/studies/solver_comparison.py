@@ -21,7 +21,9 @@ METHODS = [("cg", "muelu"), ("cg", "muelu-sa"), ("cg", "ilu"), ("cg", "jacobi"),
 
 
 def deck(problem, method, preconditioner):
-    solver = {"Method": method, "Preconditioner": preconditioner, "Maximum iterations": 5000}
+    solver = {"Method": method}
+    if method in ("cg", "gmres"):  # direct methods refuse Krylov settings
+        solver.update({"Preconditioner": preconditioner, "Maximum iterations": 5000})
     if problem.startswith("cube"):
         n = int(problem[4:])
         return box_statics_deck((1, 1, 1), (n, n, n), "zmin", "zmax",
