@@ -258,21 +258,31 @@ void WheelsetOnTrackStep::run(StepContext& context) {
     const std::string where =
         context.path + "/Conicity amplitudes: at " + CsvWriter::format(amplitude) + " m";
     const double wavelength = kinematic_wavelength(delta_r, e, r0, amplitude);
-    if (!std::isfinite(wavelength))
-      throw RunError(where + " the rolling radius difference (" +
-                     CsvWriter::format(delta_r(amplitude)) +
-                     " m) does not restore the wheelset, so there is no kinematic oscillation: is "
-                     "a profile upside down or mirrored (Profiles/Wheel mirrored, Rail mirrored)?");
-    const double kinematic =
-        finite(equivalent_conicity(wavelength, e, r0), where + " the kinematic conicity");
     const double linear =
         finite(regression_conicity(delta_r, amplitude), where + " the regression conicity");
+    // Where dr does not restore the wheelset (a hollow worn tread, or a profile mirrored or
+    // upside down) there is no kinematic oscillation and no wavelength: the regression's
+    // (negative) slope is still defined, so that route can go on with the kinematic cells left
+    // empty; the kinematic route cannot.
+    const bool oscillates = std::isfinite(wavelength);
+    if (!oscillates && !regression)
+      throw RunError(where + " the rolling radius difference (" +
+                     CsvWriter::format(delta_r(amplitude)) +
+                     " m) does not restore the wheelset, so there is no kinematic oscillation "
+                     "(regression conicity " +
+                     CsvWriter::format(linear) +
+                     "): is a profile upside down or mirrored (Profiles/Wheel mirrored, Rail "
+                     "mirrored), or use Conicity method = linear regression");
+    const double kinematic = oscillates ? finite(equivalent_conicity(wavelength, e, r0),
+                                                 where + " the kinematic conicity")
+                                        : 0.0;
     const double gamma = regression ? linear : kinematic;
     // NaN flange shift (no flange contact in the table) compares false: not reached.
     const bool reaches = amplitude >= flange_shift;
-    conicity.write_row({CsvWriter::format(amplitude), CsvWriter::format(wavelength),
-                        CsvWriter::format(kinematic), CsvWriter::format(linear),
-                        CsvWriter::format(gamma), reaches ? "1" : "0"});
+    conicity.write_row({CsvWriter::format(amplitude),
+                        oscillates ? CsvWriter::format(wavelength) : std::string(),
+                        oscillates ? CsvWriter::format(kinematic) : std::string(),
+                        CsvWriter::format(linear), CsvWriter::format(gamma), reaches ? "1" : "0"});
     if (std::abs(amplitude - 0.003) < 1e-12)
       context.summary.add(section, "equivalent conicity at 3 mm", gamma);
   }
@@ -284,17 +294,26 @@ void WheelsetOnTrackStep::run(StepContext& context) {
       {"step", "flange_contact_right_m", "flange_contact_left_m", "half_contact_distance_m",
        "centred_rolling_radius_m", "table_rows_not_converged"},
       root);
-  results.write_row({context.step_name,
-                     CsvWriter::format(table.flange_contact_shift(TrackSide::right)),
-                     CsvWriter::format(table.flange_contact_shift(TrackSide::left)),
-                     CsvWriter::format(e), CsvWriter::format(r0), std::to_string(unconverged)});
+  // No flange contact within the table (a cone, a short table): an empty cell, not NaN.
+  auto shift_cell = [&](TrackSide side) {
+    const double shift = table.flange_contact_shift(side);
+    return std::isfinite(shift) ? CsvWriter::format(shift) : std::string();
+  };
+  results.write_row({context.step_name, shift_cell(TrackSide::right), shift_cell(TrackSide::left),
+                     CsvWriter::format(finite(e, context.path + ": the half contact distance")),
+                     CsvWriter::format(finite(r0, context.path + ": the centred rolling radius")),
+                     std::to_string(unconverged)});
   results.flush();
   context.summary.add(section, "table rows", static_cast<double>(table.rows().size()));
   context.summary.add(section, "table rows not converged", unconverged);
-  context.summary.add(section, "flange contact from, right",
-                      table.flange_contact_shift(TrackSide::right) * 1e3, "mm");
-  context.summary.add(section, "flange contact from, left",
-                      table.flange_contact_shift(TrackSide::left) * 1e3, "mm");
+  for (TrackSide side : {TrackSide::left, TrackSide::right}) {
+    const double shift = table.flange_contact_shift(side);
+    const std::string key = std::string("flange contact from, ") + side_name(side);
+    if (std::isfinite(shift))
+      context.summary.add(section, key, shift * 1e3, "mm");
+    else
+      context.summary.add(section, key, "not within the table");
+  }
   context.summary.add(section, "half distance between contact points", e, "m");
   context.summary.add(section, "centred rolling radius", r0, "m");
   context.summary.add(section, "pose searches", searches);
