@@ -48,9 +48,8 @@ ParameterSpec track_parameters() {
             Range::closed(0.001, 0.05));
   spec.real("Inclination", 1.0 / 40, "Rail cant, tan of the angle towards the track centre.", "",
             Range::closed(0.0, 0.2));
-  spec.real("Back to back", 1.360,
-            "Between the wheels' flange back faces; less than Gauge by at most 0.2 m.", "m",
-            Range::closed(0.4, 1.9));
+  spec.real("Back to back", 1.360, "Between the wheels' flange back faces; within 0.2 m of Gauge.",
+            "m", Range::closed(0.4, 1.9));
   spec.real("Flange back", 0.070, "The wheel profile's y of the flange back face.", "m",
             Range::closed(0.0, 0.2));
   spec.real("Nominal radius", 0.46, "Rolling radius at the wheel profile's y = 0.", "m",

@@ -85,13 +85,14 @@ void WheelsetOnTrackStep::check(const CheckContext& context) {
     for (const std::string& warning : warnings)
       std::cerr << "warning: " << warning << "\n";
   const auto& t = parameters_->sublist("Track");
-  if (t.get<double>("Back to back") >= t.get<double>("Gauge") ||
-      t.get<double>("Gauge") - t.get<double>("Back to back") > 0.2)
+  // Gauge and back-to-back differ by the two flanges (75 mm on standard gauge); a flangeless
+  // test wheel may even have them the other way round, but never far apart.
+  if (std::abs(t.get<double>("Gauge") - t.get<double>("Back to back")) > 0.2)
     throw_input_error(
         context.source(), context.path + "/Track/Back to back",
-        std::to_string(t.get<double>("Back to back")) + " m does not fit Track/Gauge = " +
-            std::to_string(t.get<double>("Gauge")) + " m (two flanges fill the difference)",
-        "less than Gauge by 0 to 0.2 m (1360 mm for 1435 mm gauge)");
+        CsvWriter::format(t.get<double>("Back to back")) + " m does not fit Track/Gauge = " +
+            CsvWriter::format(t.get<double>("Gauge")) + " m: they differ by more than two flanges",
+        "within 0.2 m of Gauge (1.360 m for 1.435 m gauge)");
   TrackLayout track{t.get<double>("Gauge"), t.get<double>("Gauge point depth"),
                     t.get<double>("Inclination"), profiles.get<bool>("Rail canted")};
   WheelsetLayout wheelset{t.get<double>("Back to back"), t.get<double>("Flange back"),
