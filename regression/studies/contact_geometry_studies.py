@@ -138,6 +138,7 @@ def conicity_deck(profiles, track):
   <Parameter name="Table half range" type="double" value="0.012"/>
   <Parameter name="Table resolution" type="double" value="1e-5"/>
   <Parameter name="Conicity amplitudes" type="Array(double)" value="{{{amplitudes}}}"/>
+  <Parameter name="Conicity method" type="string" value="linear regression"/>
   <Parameter name="Chart" type="bool" value="false"/>
 </ParameterList></ParameterList></ParameterList>
 """
@@ -167,8 +168,14 @@ def conicity_chart(railfe):
     for ax, (name, _, _) in zip(axes, CONICITY_PAIRS):
         mine = [r for r in rows if r["pair"] == name]
         amplitude = [1e3 * float(r["amplitude_m"]) for r in mine]
-        ax.plot(amplitude, [float(r["kinematic_conicity"]) for r in mine], "o-",
+        # Empty where dr does not restore the wheelset (no kinematic oscillation).
+        kinematic = [(a, float(r["kinematic_conicity"])) for a, r in zip(amplitude, mine)
+                     if r["kinematic_conicity"]]
+        ax.plot([a for a, _ in kinematic], [g for _, g in kinematic], "o-",
                 label="kinematic wavelength")
+        if not kinematic:
+            ax.text(0.5, 0.5, "no kinematic oscillation:\nΔr does not restore (hollow tread)",
+                    transform=ax.transAxes, ha="center", fontsize=8)
         ax.plot(amplitude, [float(r["regression_conicity"]) for r in mine], "s--",
                 label="linear regression (EN 15302 Annex C)")
         flange = [a for a, r in zip(amplitude, mine) if r["reaches_flange"] == "1"]
@@ -176,10 +183,11 @@ def conicity_chart(railfe):
             ax.axvspan(min(flange), max(amplitude), color="grey", alpha=0.15,
                        label="amplitude reaches the flange")
         ax.set_title(name, fontsize=10)
+        ax.ticklabel_format(axis="y", useOffset=False)
         ax.set_xlabel("amplitude ŷ (mm)")
         ax.grid(alpha=0.3)
     axes[0].set_ylabel("equivalent conicity tan γe")
-    axes[0].legend(fontsize=8)
+    axes[1].legend(fontsize=8, loc="upper center")
     fig.tight_layout()
     fig.savefig(png, dpi=110)
     print("wrote", csv_path, png)
