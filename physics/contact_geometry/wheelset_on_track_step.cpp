@@ -54,6 +54,12 @@ const char* side_name(TrackSide side) {
   return side == TrackSide::left ? "left" : "right";
 }
 
+// Every value of a row about to be written must be finite.
+void require_finite(std::initializer_list<double> values, const std::string& where) {
+  for (double value : values)
+    finite(value, where);
+}
+
 }  // namespace
 
 WheelsetOnTrackStep::WheelsetOnTrackStep(const Teuchos::ParameterList& parameters)
@@ -150,6 +156,14 @@ void WheelsetOnTrackStep::run(StepContext& context) {
   for (std::size_t i = 0; i < table.rows().size(); ++i) {
     const RigidContact& r = table.rows()[i];
     unconverged += r.converged ? 0 : 1;
+    require_finite({r.vertical, r.roll, table.rolling_radius_difference(i)},
+                   context.path + ": contact table row at " + CsvWriter::format(r.lateral) + " m");
+    for (TrackSide side : {TrackSide::left, TrackSide::right}) {
+      const ContactPoint& c = r.active(side);
+      require_finite({c.rolling_radius, c.contact_angle, c.rail_point.y},
+                     context.path + ": contact table row at " + CsvWriter::format(r.lateral) +
+                         " m, " + side_name(side) + " wheel");
+    }
     std::vector<std::string> cells = {
         CsvWriter::format(r.lateral), CsvWriter::format(r.vertical), CsvWriter::format(r.roll),
         CsvWriter::format(table.rolling_radius_difference(i)), r.converged ? "1" : "0"};
@@ -211,6 +225,11 @@ void WheelsetOnTrackStep::run(StepContext& context) {
         ++searches;
         failed += c.status == SearchStatus::not_converged ? 1 : 0;
         iterations += c.iterations;
+        require_finite(
+            {c.rail_point.y, c.rail_point.z, c.x, c.contact_angle, c.rolling_radius, c.gap,
+             c.wheel_lateral_curvature, c.rail_lateral_curvature, c.wheel_rolling_curvature},
+            context.path + "/Poses/" + deck_pose.name + ": the " + side_name(side) +
+                (flange ? " flange" : " tread") + " search");
         contacts.write_row(
             {deck_pose.name + " " + side_name(side) + (flange ? " flange" : " tread"),
              deck_pose.name,
