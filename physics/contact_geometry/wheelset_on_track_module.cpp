@@ -98,7 +98,8 @@ ParameterSpec wheelset_on_track_parameters() {
                   "m", 0, Range::positive());
   spec.choice("Conicity method", "kinematic wavelength",
               {{"kinematic wavelength",
-                "the wavelength of the nonlinear kinematic motion, integrated over one period"},
+                "EN 15302 Annex B: the wavelength of the nonlinear kinematic motion, integrated "
+                "over one period"},
                {"linear regression",
                 "EN 15302 Annex C: least-squares line through dr over a harmonic motion"}},
               "Which route gives equivalent_conicity and the summary; conicity.csv lists both.");
