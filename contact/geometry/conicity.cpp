@@ -14,6 +14,22 @@ double equivalent_conicity(double wavelength, double e, double r0) {
   return e * r0 * k * k;
 }
 
+double regression_conicity(const std::function<double(double)>& delta_r, double amplitude,
+                           int samples) {
+  double sum_y = 0, sum_r = 0, sum_yy = 0, sum_yr = 0;
+  for (int k = 0; k < samples; ++k) {
+    const double y = amplitude * std::sin(2 * M_PI * (k + 0.5) / samples);
+    const double r = delta_r(y);
+    sum_y += y;
+    sum_r += r;
+    sum_yy += y * y;
+    sum_yr += y * r;
+  }
+  const double n = samples;
+  const double slope = (sum_yr - sum_y * sum_r / n) / (sum_yy - sum_y * sum_y / n);
+  return slope / 2;
+}
+
 double kinematic_wavelength(const std::function<double(double)>& delta_r, double e, double r0,
                             double amplitude) {
   auto acceleration = [&](double y) { return -delta_r(y) / (2 * e * r0); };

@@ -24,4 +24,13 @@ double kinematic_wavelength(const std::function<double(double)>& delta_r, double
 /// Equivalent conicity of a wavelength: e r0 (2 pi / lambda)^2.
 double equivalent_conicity(double wavelength, double e, double r0);
 
+/// Equivalent conicity by linear regression of the rolling radius difference (EN 15302:2008+A1,
+/// Annex C): dr is sampled along a harmonic motion y = y_hat sin(phi), \p samples phases evenly
+/// spaced over one period (so each shift counts as long as the wheelset dwells there), a straight
+/// line is fitted by least squares and tan(gamma_e) is half its slope. It needs no e or r0 and
+/// stays finite where dr jumps (flange contact within the amplitude), which the kinematic
+/// wavelength does not smooth.
+double regression_conicity(const std::function<double(double)>& delta_r, double amplitude,
+                           int samples = 2000);
+
 }  // namespace railfe

@@ -33,6 +33,13 @@ std::string strip(const std::string& line) {
   return line.substr(first, last - first + 1);
 }
 
+// The SIMPACK spline block's processing settings railfe does not apply (the point list is used
+// as it stands); bounds are left out, since their neutral values are not zero.
+bool is_ignored_processing(const std::string& key) {
+  return key == "mirror.y" || key == "mirror.z" || key == "inversion" || key == "shift.y" ||
+         key == "shift.z" || key == "rotate";
+}
+
 class ProfileParser {
  public:
   explicit ProfileParser(std::string path) : path_(std::move(path)) {}
@@ -90,6 +97,13 @@ class ProfileParser {
       if (!factor || *factor <= 0)
         fail("units.len.f = " + value + " is not a unit factor", "a positive number");
       unit_factor_ = *factor;
+    } else if (block_ == "spline" && is_ignored_processing(key)) {
+      const auto number = profile_number(value);
+      if (!number || *number != 0)
+        file_.warnings.push_back(path_ + ": line " + std::to_string(line_number_) + ": " + key +
+                                 " = " + value +
+                                 " is not applied: the points are taken as listed (use the deck's "
+                                 "Wheel mirrored / Rail mirrored / Wheel running point instead)");
     } else if (block_ == "spline" && key == "comment") {
       file_.comment = value.size() >= 2 && value.front() == '\'' && value.back() == '\''
                           ? value.substr(1, value.size() - 2)
@@ -129,29 +143,50 @@ class ProfileParser {
   std::optional<double> unit_factor_;
 };
 
-// A wheel's highest point (the flange tip) on +y; a rail's lowest z (its top) inside, not at
-// an end: what a mirrored or upside-down file gets wrong.
-void check_orientation(const ProfileFile& file) {
+// A wheel's highest point (the flange tip) on +y and above its running point; a rail's lowest z
+// (its top) inside, not at an end: what a mirrored or upside-down file gets wrong. \p type is
+// what the profile is used as.
+void check_orientation(const ProfileFile& file, ProfileType type) {
   const auto& p = file.points;
-  if (file.type == ProfileType::wheel) {
-    const auto tip =
-        std::max_element(p.begin(), p.end(), [](auto& a, auto& b) { return a[1] < b[1]; });
+  auto higher = [](auto& a, auto& b) { return a[1] < b[1]; };
+  if (type == ProfileType::wheel) {
+    const auto tip = std::max_element(p.begin(), p.end(), higher);
     if ((*tip)[0] <= 0)
-      throw_input_error(file.source, "", "the wheel's flange (its highest point) lies at y <= 0",
+      throw_input_error(file.source, "",
+                        "the wheel's flange (its highest point) lies at y <= 0: the profile is "
+                        "mirrored or upside down",
                         "y from the running point towards the flange, z radially outwards");
-  } else if (file.type == ProfileType::rail) {
-    const auto top =
-        std::min_element(p.begin(), p.end(), [](auto& a, auto& b) { return a[1] < b[1]; });
+    // The point nearest the running point (y = 0) must lie below the tip: z points outwards.
+    const auto running = std::min_element(
+        p.begin(), p.end(), [](auto& a, auto& b) { return std::abs(a[0]) < std::abs(b[0]); });
+    const double rise = (*tip)[1] - (*running)[1];
+    const double fall = (*running)[1] - (*std::min_element(p.begin(), p.end(), higher))[1];
+    // Turned over (mirrored and upside down), the flange becomes a deep groove below the
+    // running point and the tread's far end the highest point.
+    if (!(rise > 0) || (fall > 0.010 && fall > rise))
+      throw_input_error(file.source, "",
+                        "the wheel is upside down: it rises " + std::to_string(rise * 1e3) +
+                            " mm above its running point (y = 0) and falls " +
+                            std::to_string(fall * 1e3) + " mm below it",
+                        "z radially outwards, the flange tip the highest point, on +y");
+  } else if (type == ProfileType::rail) {
+    const auto top = std::min_element(p.begin(), p.end(), higher);
     if (top == p.begin() || top == p.end() - 1)
       throw_input_error(file.source, "",
-                        "the rail's top (its least z) lies at an end of the profile",
+                        "the rail's top (its least z) lies at an end of the profile: the profile "
+                        "is upside down or not a rail head",
                         "z downwards, the head's top inside the profile");
   }
 }
 
 }  // namespace
 
-ProfileFile read_profile_file(const std::string& path, const ProfileReadSettings& checks) {
+ProfileFile read_profile_file(const std::string& path, const ProfileReadSettings& checks,
+                              ProfileType role) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error))
+    throw_input_error(path, "", "is a directory, not a profile file",
+                      "a SIMPACK .prr/.prw, MiniProf .ban/.whl or two-column .txt/.dat/.csv file");
   std::ifstream in(path);
   if (!in)
     throw_input_error(path, "", "profile file not found or not readable");
@@ -169,11 +204,24 @@ ProfileFile read_profile_file(const std::string& path, const ProfileReadSettings
   for (auto& point : file.points)
     point[0] = (checks.mirror_y ? -1 : 1) * (point[0] - checks.y_origin);
   check_profile(file.points, file.lines, path, checks);
+  // A wheel or rail profile is centimetres to decimetres wide: anything else is a file in
+  // another length unit than it says (or than its format assumes).
+  double low = file.points.front()[0], high = low;
+  for (const auto& point : file.points) {
+    low = std::min(low, point[0]);
+    high = std::max(high, point[0]);
+  }
+  if (high - low < 0.001 || high - low > 0.5)
+    throw_input_error(
+        path, "",
+        "the profile is " + std::to_string(high - low) + " m wide: its length unit is wrong",
+        "a profile 1 mm to 500 mm wide (SIMPACK: units.len.f = 1000 for mm; "
+        "MiniProf and two-column files are read in mm)");
   if (file.points.back()[0] < file.points.front()[0]) {
     std::reverse(file.points.begin(), file.points.end());
     std::reverse(file.lines.begin(), file.lines.end());
   }
-  check_orientation(file);
+  check_orientation(file, file.type == ProfileType::unspecified ? role : file.type);
   return file;
 }
 

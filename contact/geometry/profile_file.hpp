@@ -37,15 +37,23 @@ struct ProfileFile {
   /// its back face near y = 70 mm) and z grows radially outwards (the flange tip at z = 28 mm).
   std::vector<std::array<double, 2>> points;
   std::vector<int> lines;  ///< each point's line in the file
+  /// Header settings the reader does not apply (a SIMPACK spline block's mirror, inversion,
+  /// shift or rotation that is not neutral), one line each naming the file and the setting:
+  /// the caller prints them, since the points are taken as listed.
+  std::vector<std::string> warnings;
 };
 
 /// Reads a profile file of any of the formats above (lengths in metres, listed from the smaller
 /// to the larger y end) after moving y to \p checks' origin and mirroring it, and checks it with
 /// \p checks. The SIMPACK spline block's processing
-/// settings (shift, rotate, bound, mirror, inversion, smoothing) are not applied. A wheel's flange
-/// (its highest point) must lie on +y and a rail's top must be its lowest z. Throws InputError
-/// naming the file (and line) when it is missing, unreadable or fails a check.
-ProfileFile read_profile_file(const std::string& path, const ProfileReadSettings& checks = {});
+/// settings (shift, rotate, bound, mirror, inversion, smoothing) are not applied; those that are
+/// not neutral are listed in ProfileFile::warnings. The profile must be the right way up for
+/// \p role (a two-column file takes the role it is given as): a wheel's flange (its highest
+/// point) on +y, above its running point; a rail's top its lowest z, inside the profile, with
+/// the head's sides falling away from it. Throws InputError naming the file (and line) when it
+/// is missing, a directory, unreadable or fails a check.
+ProfileFile read_profile_file(const std::string& path, const ProfileReadSettings& checks = {},
+                              ProfileType role = ProfileType::unspecified);
 
 /// Path of a profile file shipped with railfe in inputs/profiles (e.g. "MBench_S1002_v3.prw").
 std::string shipped_profile(const std::string& file_name);

@@ -7,6 +7,7 @@
 
 #include "contact/geometry/conicity.hpp"
 #include "contact/geometry/contact_table.hpp"
+#include "contact/geometry/elastic_wheelset.hpp"
 #include "contact/geometry/profile_file.hpp"
 
 namespace railfe {
@@ -118,6 +119,41 @@ TEST(ContactSearch, ConeOnCrownTouchesWhereTheSlopesMatch) {
   EXPECT_NEAR(c.rolling_radius, expected_radius, 1e-5 * expected_radius);
   // Along the rolling direction the cone's normal curvature is cos(delta) / r.
   EXPECT_NEAR(c.wheel_rolling_curvature, std::cos(delta) / c.rolling_radius, 1e-9);
+}
+
+TEST(ElasticWheelset, ConeOnCrownGivesHertzForTheLoad) {
+  // 1:40 cones on 300 mm crowns under 100 kN: each wheel carries W / 2 vertically on a normal
+  // tilted by atan(1/40), so N = W / (2 cos delta); the cone's normal curvature along the
+  // rolling direction is cos(delta) / r, the crown's lateral one 1 / R; and as a line sinking
+  // onto a circle the wheel approaches the crown by its vertical sink times cos(delta).
+  const TrackLayout track = exact_track();
+  WheelsetLayout wheelset;
+  const double gamma = 1.0 / 40, load = 100e3;
+  auto wheel = line_curve({-0.06, -0.06 * gamma}, {0.07, 0.07 * gamma});
+  WheelRailGeometry geometry(crown(), std::move(wheel), track, wheelset);
+  const RigidContact rigid = solve_rigid_contact(geometry, 0, 0, nullptr);
+  ASSERT_TRUE(rigid.converged);
+  const double modulus = contact_modulus({210e9, 0.28}, {210e9, 0.28});
+  const ElasticContact elastic = solve_elastic_contact(geometry, rigid, 0, load, modulus);
+  ASSERT_TRUE(elastic.converged) << elastic.failure;
+  const double delta = std::atan(gamma);
+  for (TrackSide side : {TrackSide::left, TrackSide::right}) {
+    const ElasticPatch& patch = elastic.patches[static_cast<int>(side)][0];
+    ASSERT_TRUE(patch.loaded());
+    EXPECT_FALSE(elastic.patches[static_cast<int>(side)][1].loaded());
+    EXPECT_NEAR(std::abs(patch.point.contact_angle), delta, 1e-9);
+    const double radius = patch.point.rolling_radius;
+    const HertzContact exact = hertz_contact(std::cos(delta) / (2 * radius), 0.5 / kRail, modulus,
+                                             load / (2 * std::cos(delta)));
+    EXPECT_NEAR(patch.hertz.load, exact.load, 1e-9 * exact.load);
+    EXPECT_NEAR(patch.hertz.a, exact.a, 1e-6 * exact.a);
+    EXPECT_NEAR(patch.hertz.b, exact.b, 1e-6 * exact.b);
+    EXPECT_NEAR(patch.hertz.pressure, exact.pressure, 1e-6 * exact.pressure);
+    EXPECT_NEAR((elastic.pose.vertical - rigid.vertical) * std::cos(delta), exact.approach,
+                1e-6 * exact.approach);
+  }
+  EXPECT_NEAR(elastic.roll_residual, 0, 1e-10 * load);
+  EXPECT_NEAR(elastic.lateral_force, 0, 1e-9 * load);
 }
 
 TEST(Conicity, KlingelWavelengthOfAConicalWheelset) {

@@ -174,5 +174,66 @@ TEST_F(ProfileFiles, RefusesMirroredWheelsAndUpsideDownRails) {
   EXPECT_NE(message.find("rail's top"), std::string::npos) << message;
 }
 
+TEST_F(ProfileFiles, RefusesUpsideDownWheelsInEveryFormat) {
+  // A flanged wheel in mm: a 1:40 tread and a smooth flange 28 mm high at y = 50.
+  auto wheel = [](double sign_y, double sign_z) {
+    std::string text;
+    for (int k = 0; k <= 250; ++k) {
+      const double y = -60 + 0.5 * k;
+      const double z = y / 40 + 28 * std::exp(-std::pow((y - 50) / 15, 2));
+      text += std::to_string(sign_y * y) + " " + std::to_string(sign_z * z) + "\n";
+    }
+    return text;
+  };
+  EXPECT_EQ(input_error_of([&] {
+              read_profile_file(write("wheel.txt", wheel(1, 1)), {}, ProfileType::wheel);
+            }),
+            "");
+  // Upside down: the highest point moves to the field side.
+  auto message = input_error_of(
+      [&] { read_profile_file(write("upside_down.txt", wheel(1, -1)), {}, ProfileType::wheel); });
+  EXPECT_NE(message.find("upside_down.txt"), std::string::npos) << message;
+  EXPECT_NE(message.find("upside down"), std::string::npos) << message;
+  // Turned over (mirrored and upside down): the flange becomes a groove below the tread.
+  message = input_error_of(
+      [&] { read_profile_file(write("turned.txt", wheel(-1, -1)), {}, ProfileType::wheel); });
+  EXPECT_NE(message.find("turned.txt"), std::string::npos) << message;
+  EXPECT_NE(message.find("the wheel is upside down"), std::string::npos) << message;
+  EXPECT_NE(message.find("z radially outwards"), std::string::npos) << message;
+}
+
+TEST_F(ProfileFiles, RefusesAProfileInTheWrongLengthUnit) {
+  // A crown listed in mm with units.len.f = 1 (metres) would be 40 m wide.
+  const std::string metres = write("metres.prr",
+                                   "header.begin\n  type = 0\nheader.end\nspline.begin\n"
+                                   "  units.len.f = 1.\npoint.begin\n" +
+                                       crown_points() + "point.end\nspline.end\n");
+  const std::string message = refusal(metres);
+  EXPECT_NE(message.find("40.0"), std::string::npos) << message;
+  EXPECT_NE(message.find("units.len.f"), std::string::npos) << message;
+}
+
+TEST_F(ProfileFiles, SaysADirectoryIsADirectory) {
+  fs::create_directories(dir_ / "profile.prw");
+  const std::string message = refusal((dir_ / "profile.prw").string());
+  EXPECT_NE(message.find("is a directory"), std::string::npos) << message;
+}
+
+TEST_F(ProfileFiles, WarnsAboutSimpackProcessingFlagsItDoesNotApply) {
+  const std::string crown = crown_points();
+  const std::string flagged =
+      write("flagged.prr",
+            "header.begin\n  type = 0\nheader.end\nspline.begin\n  mirror.y = 0\n"
+            "  mirror.z = 1\n  inversion = 1\n  shift.y = +0.0e+00\n  units.len.f = 1000.\n"
+            "point.begin\n" +
+                crown + "point.end\nspline.end\n");
+  const ProfileFile profile = read_profile_file(flagged);
+  ASSERT_EQ(profile.warnings.size(), 2u);
+  EXPECT_NE(profile.warnings[0].find("flagged.prr"), std::string::npos) << profile.warnings[0];
+  EXPECT_NE(profile.warnings[0].find("mirror.z = 1"), std::string::npos) << profile.warnings[0];
+  EXPECT_NE(profile.warnings[1].find("inversion = 1"), std::string::npos) << profile.warnings[1];
+  EXPECT_TRUE(read_profile_file(rail("plain.prr", crown)).warnings.empty());
+}
+
 }  // namespace
 }  // namespace railfe

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "contact/geometry/contact_table.hpp"
+#include "contact/geometry/elastic_wheelset.hpp"
 #include "contact/geometry/profile_file.hpp"
 
 namespace railfe {
@@ -45,6 +46,53 @@ TEST(S1002On60E1, CentredWheelsetTouchesOnTheTread) {
   EXPECT_NEAR(centre.active(TrackSide::right).rolling_radius,
               centre.active(TrackSide::left).rolling_radius, 1e-9);
   EXPECT_NEAR(centre.roll, 0, 1e-12);
+}
+
+TEST(S1002On60E1, ElasticCentredWheelsetSplitsTheLoadEvenly) {
+  const RigidContact rigid = solve_rigid_contact(benchmark_geometry(), 0, 0, nullptr);
+  const double load = 100e3, modulus = contact_modulus({210e9, 0.28}, {210e9, 0.28});
+  const ElasticContact elastic =
+      solve_elastic_contact(benchmark_geometry(), rigid, 0, load, modulus);
+  ASSERT_TRUE(elastic.converged) << elastic.failure;
+  const ElasticPatch &left = elastic.patches[0][0], &right = elastic.patches[1][0];
+  ASSERT_TRUE(left.loaded() && right.loaded());
+  EXPECT_NEAR(left.hertz.load, right.hertz.load, 1e-8 * load);
+  EXPECT_NEAR(-(left.force_z + right.force_z), load, 1e-8 * load);
+  EXPECT_NEAR(left.force_y + right.force_y, 0, 1e-8 * load);
+  EXPECT_NEAR(elastic.pose.roll, 0, 1e-12);
+  // The wheelset sinks: the elastic position lies below the rigid one by about the approach.
+  EXPECT_GT(elastic.pose.vertical, rigid.vertical);
+  EXPECT_NEAR(elastic.pose.vertical - rigid.vertical, right.hertz.approach,
+              0.2 * right.hertz.approach);
+}
+
+TEST(S1002On60E1, ElasticFlangeContactBalancesTheForces) {
+  // At 8 mm the right wheel touches on its flange: with the load, tread and flange both carry.
+  const RigidContact rigid = solve_rigid_contact(benchmark_geometry(), 0.008, 0, nullptr);
+  ASSERT_TRUE(rigid.converged);
+  const double load = 100e3, modulus = contact_modulus({210e9, 0.28}, {210e9, 0.28});
+  const ElasticContact elastic =
+      solve_elastic_contact(benchmark_geometry(), rigid, 0, load, modulus);
+  ASSERT_TRUE(elastic.converged) << elastic.failure;
+  ASSERT_TRUE(elastic.patches[1][1].loaded());
+  double vertical = 0, lateral = 0, moment = 0;
+  for (const auto& side : elastic.patches)
+    for (const ElasticPatch& patch : side) {
+      if (!patch.loaded())
+        continue;
+      // Each patch's force lies along its normal with Hertz's magnitude.
+      EXPECT_NEAR(std::hypot(patch.force_y, patch.force_z), patch.hertz.load,
+                  1e-12 * patch.hertz.load);
+      vertical += patch.force_z;
+      lateral += patch.force_y;
+      moment += (patch.point.rail_point.y - elastic.pose.lateral) * patch.force_z -
+                (patch.point.rail_point.z - (elastic.pose.vertical - 0.46)) * patch.force_y;
+    }
+  EXPECT_NEAR(-vertical, load, 1e-8 * load);
+  EXPECT_NEAR(moment, 0, 1e-8 * load);
+  EXPECT_NEAR(lateral, elastic.lateral_force, 1e-9 * load);
+  // The flange pushes the wheelset back towards the centre.
+  EXPECT_LT(elastic.lateral_force, 0);
 }
 
 // The table at 0.01 mm steps over ±15 mm, shared by the tests below.

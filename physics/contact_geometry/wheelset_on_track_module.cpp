@@ -41,17 +41,19 @@ ParameterSpec profile_parameters() {
 
 ParameterSpec track_parameters() {
   ParameterSpec spec("Track and wheelset dimensions.");
-  spec.real("Gauge", 1.435, "Between the rails' gauge points.", "m", Range::positive());
+  // Ranges span the world's gauges (600 mm to 1676 mm) and wheels (tram to locomotive), so
+  // a value in the wrong unit is refused here rather than failing the contact search later.
+  spec.real("Gauge", 1.435, "Between the rails' gauge points.", "m", Range::closed(0.5, 2.0));
   spec.real("Gauge point depth", 0.014, "Depth of the gauge point below the top of rail.", "m",
-            Range::positive());
+            Range::closed(0.001, 0.05));
   spec.real("Inclination", 1.0 / 40, "Rail cant, tan of the angle towards the track centre.", "",
             Range::closed(0.0, 0.2));
-  spec.real("Back to back", 1.360, "Between the wheels' flange back faces.", "m",
-            Range::positive());
+  spec.real("Back to back", 1.360, "Between the wheels' flange back faces; within 0.2 m of Gauge.",
+            "m", Range::closed(0.4, 1.9));
   spec.real("Flange back", 0.070, "The wheel profile's y of the flange back face.", "m",
-            Range::positive());
+            Range::closed(0.0, 0.2));
   spec.real("Nominal radius", 0.46, "Rolling radius at the wheel profile's y = 0.", "m",
-            Range::positive());
+            Range::closed(0.1, 1.0));
   return spec;
 }
 
@@ -91,8 +93,24 @@ ParameterSpec wheelset_on_track_parameters() {
                "tracked (contact jumps); 0 = none.",
                Range::at_least(0));
   spec.real_array("Conicity amplitudes", {0.001, 0.002, 0.003, 0.004, 0.005, 0.006, 0.007, 0.008},
-                  "Amplitudes of the kinematic motion for the equivalent conicity (EN 15302).", "m",
-                  0, Range::positive());
+                  "Amplitudes of the kinematic motion for the equivalent conicity (EN 15302); "
+                  "at most Table half range.",
+                  "m", 0, Range::positive());
+  spec.choice("Conicity method", "kinematic wavelength",
+              {{"kinematic wavelength",
+                "EN 15302 Annex B: the wavelength of the nonlinear kinematic motion, integrated "
+                "over one period"},
+               {"linear regression",
+                "EN 15302 Annex C: least-squares line through dr over a harmonic motion"}},
+              "Which route gives equivalent_conicity and the summary; conicity.csv lists both.");
+  spec.real("Vertical load", 0,
+            "Per wheelset, downwards: the poses are also solved elastically (Hertzian patches, "
+            "elastic_contacts.csv); 0 = rigid geometry only.",
+            "N", Range::closed(0.0, 1e7));
+  spec.real("Young's modulus", 210e9, "Of wheel and rail (elastic poses).", "Pa",
+            Range::closed(1e9, 1e13));
+  spec.real("Poisson's ratio", 0.28, "Of wheel and rail (elastic poses).", "",
+            Range::closed_open(0.0, 0.5));
   spec.flag("Chart", true,
             "Draw geometry.png: profiles with contact points, rolling radius difference and "
             "contact angles against the shift (needs python3 with matplotlib).");

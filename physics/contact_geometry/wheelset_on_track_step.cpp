@@ -1,10 +1,12 @@
 #include "physics/contact_geometry/wheelset_on_track_step.hpp"
 
 #include <cmath>
+#include <iostream>
 #include <stdexcept>
 
 #include "contact/geometry/conicity.hpp"
 #include "contact/geometry/contact_table.hpp"
+#include "contact/geometry/elastic_wheelset.hpp"
 #include "contact/geometry/profile_file.hpp"
 #include "framework/base/error.hpp"
 #include "framework/output/csv_writer.hpp"
@@ -14,24 +16,48 @@ namespace railfe {
 
 namespace {
 
+// Reads the profile \p file that the deck's \p parameter points to; every error about the file
+// names the deck and that parameter too. Warnings (header settings not applied) go to \p warnings.
 std::shared_ptr<const ProfileCurve> read_curve(const std::string& file, ProfileType role,
                                                const ProfileReadSettings& checks,
-                                               const std::string& where) {
-  const ProfileFile profile = read_profile_file(file, checks);
+                                               const std::string& deck,
+                                               const std::string& parameter,
+                                               std::vector<std::string>& warnings) {
+  ProfileFile profile;
+  try {
+    profile = read_profile_file(file, checks, role);
+  } catch (const InputError& error) {
+    throw_input_error(deck, parameter, std::string("profile file ") + error.what());
+  }
   if (profile.type != role && profile.type != ProfileType::unspecified)
-    throw_input_error(file, "",
-                      std::string("is a ") +
+    throw_input_error(deck, parameter,
+                      "profile file " + file + ": is a " +
                           (profile.type == ProfileType::rail ? "rail" : "wheel") +
-                          " profile, given as " + where,
+                          " profile, given as " + parameter,
                       role == ProfileType::rail ? "a rail profile" : "a wheel profile");
+  for (const std::string& warning : profile.warnings)
+    warnings.push_back(warning + " (" + deck + ": " + parameter + ")");
   std::vector<Vec2> points;
   for (const auto& p : profile.points)
     points.push_back({p[0], p[1]});
   return spline_curve(points);
 }
 
+// A result about to be written must be finite: a non-finite one is a failed computation.
+double finite(double value, const std::string& where) {
+  if (!std::isfinite(value))
+    throw RunError(where + " is not finite (" + std::to_string(value) + ")");
+  return value;
+}
+
 const char* side_name(TrackSide side) {
   return side == TrackSide::left ? "left" : "right";
+}
+
+// Every value of a row about to be written must be finite.
+void require_finite(std::initializer_list<double> values, const std::string& where) {
+  for (double value : values)
+    finite(value, where);
 }
 
 }  // namespace
@@ -56,11 +82,23 @@ void WheelsetOnTrackStep::check(const CheckContext& context) {
   wheel_axes.y_origin = profiles.get<double>("Wheel running point");
   const std::string rail_file = file("Rail", "MBench_UIC60_v3.prr");
   const std::string wheel_file = file("Wheel", "MBench_S1002_v3.prw");
-  const auto rail =
-      read_curve(rail_file, ProfileType::rail, rail_axes, context.path + "/Profiles/Rail");
-  const auto wheel =
-      read_curve(wheel_file, ProfileType::wheel, wheel_axes, context.path + "/Profiles/Wheel");
+  std::vector<std::string> warnings;
+  const auto rail = read_curve(rail_file, ProfileType::rail, rail_axes, context.source(),
+                               context.path + "/Profiles/Rail", warnings);
+  const auto wheel = read_curve(wheel_file, ProfileType::wheel, wheel_axes, context.source(),
+                                context.path + "/Profiles/Wheel", warnings);
+  if (context.model.comm().is_root())
+    for (const std::string& warning : warnings)
+      std::cerr << "warning: " << warning << "\n";
   const auto& t = parameters_->sublist("Track");
+  // Gauge and back-to-back differ by the two flanges (75 mm on standard gauge); a flangeless
+  // test wheel may even have them the other way round, but never far apart.
+  if (std::abs(t.get<double>("Gauge") - t.get<double>("Back to back")) > 0.2)
+    throw_input_error(
+        context.source(), context.path + "/Track/Back to back",
+        CsvWriter::format(t.get<double>("Back to back")) + " m does not fit Track/Gauge = " +
+            CsvWriter::format(t.get<double>("Gauge")) + " m: they differ by more than two flanges",
+        "within 0.2 m of Gauge (1.360 m for 1.435 m gauge)");
   TrackLayout track{t.get<double>("Gauge"), t.get<double>("Gauge point depth"),
                     t.get<double>("Inclination"), profiles.get<bool>("Rail canted")};
   WheelsetLayout wheelset{t.get<double>("Back to back"), t.get<double>("Flange back"),
@@ -90,6 +128,11 @@ void WheelsetOnTrackStep::check(const CheckContext& context) {
   if (range / resolution > 50000)
     throw_input_error(context.source(), context.path + "/Table resolution",
                       "gives more than 100001 table rows", "at least Table half range / 50000");
+  for (double amplitude : parameters_->get<Teuchos::Array<double>>("Conicity amplitudes"))
+    if (amplitude > range)
+      throw_input_error(context.source(), context.path + "/Conicity amplitudes",
+                        std::to_string(amplitude) + " m lies beyond the contact table",
+                        "at most Table half range (" + std::to_string(range) + " m)");
 }
 
 void WheelsetOnTrackStep::run(StepContext& context) {
@@ -113,6 +156,14 @@ void WheelsetOnTrackStep::run(StepContext& context) {
   for (std::size_t i = 0; i < table.rows().size(); ++i) {
     const RigidContact& r = table.rows()[i];
     unconverged += r.converged ? 0 : 1;
+    require_finite({r.vertical, r.roll, table.rolling_radius_difference(i)},
+                   context.path + ": contact table row at " + CsvWriter::format(r.lateral) + " m");
+    for (TrackSide side : {TrackSide::left, TrackSide::right}) {
+      const ContactPoint& c = r.active(side);
+      require_finite({c.rolling_radius, c.contact_angle, c.rail_point.y},
+                     context.path + ": contact table row at " + CsvWriter::format(r.lateral) +
+                         " m, " + side_name(side) + " wheel");
+    }
     std::vector<std::string> cells = {
         CsvWriter::format(r.lateral), CsvWriter::format(r.vertical), CsvWriter::format(r.roll),
         CsvWriter::format(table.rolling_radius_difference(i)), r.converged ? "1" : "0"};
@@ -157,7 +208,9 @@ void WheelsetOnTrackStep::run(StepContext& context) {
           solve_rigid_contact(geometry, pose.lateral, pose.yaw, nullptr, check_samples);
       if (!rigid.converged)
         throw RunError(context.path + "/Poses/" + deck_pose.name +
-                       ": the rigid wheelset's vertical position and roll did not converge");
+                       ": the rigid wheelset's vertical position and roll did not converge; check "
+                       "that Track/Gauge, Track/Back to back and Track/Nominal radius fit the "
+                       "profiles (in m) and the profiles' length unit");
       pose.vertical = rigid.vertical;
       pose.roll = rigid.roll;
     }
@@ -172,6 +225,11 @@ void WheelsetOnTrackStep::run(StepContext& context) {
         ++searches;
         failed += c.status == SearchStatus::not_converged ? 1 : 0;
         iterations += c.iterations;
+        require_finite(
+            {c.rail_point.y, c.rail_point.z, c.x, c.contact_angle, c.rolling_radius, c.gap,
+             c.wheel_lateral_curvature, c.rail_lateral_curvature, c.wheel_rolling_curvature},
+            context.path + "/Poses/" + deck_pose.name + ": the " + side_name(side) +
+                (flange ? " flange" : " tread") + " search");
         contacts.write_row(
             {deck_pose.name + " " + side_name(side) + (flange ? " flange" : " tread"),
              deck_pose.name,
@@ -208,34 +266,74 @@ void WheelsetOnTrackStep::run(StepContext& context) {
     return (1 - w) * table.rolling_radius_difference(i) +
            w * table.rolling_radius_difference(i + 1);
   };
+  const double flange_shift = std::min(std::abs(table.flange_contact_shift(TrackSide::right)),
+                                       std::abs(table.flange_contact_shift(TrackSide::left)));
+  const bool regression = parameters_->get<std::string>("Conicity method") == "linear regression";
   CsvWriter conicity(context.output.staging_path("conicity.csv"),
-                     {"amplitude_m", "wavelength_m", "equivalent_conicity"}, root);
+                     {"amplitude_m", "wavelength_m", "kinematic_conicity", "regression_conicity",
+                      "equivalent_conicity", "reaches_flange"},
+                     root);
   const auto& amplitudes = parameters_->get<Teuchos::Array<double>>("Conicity amplitudes");
   for (double amplitude : amplitudes) {
-    // Beyond the table the rolling radius difference is unknown: no conicity there.
-    const double wavelength =
-        amplitude <= range ? kinematic_wavelength(delta_r, e, r0, amplitude) : std::nan("");
-    const double gamma = equivalent_conicity(wavelength, e, r0);
-    conicity.write_row(std::vector<double>{amplitude, wavelength, gamma});
+    const std::string where =
+        context.path + "/Conicity amplitudes: at " + CsvWriter::format(amplitude) + " m";
+    const double wavelength = kinematic_wavelength(delta_r, e, r0, amplitude);
+    const double linear =
+        finite(regression_conicity(delta_r, amplitude), where + " the regression conicity");
+    // Where dr does not restore the wheelset (a hollow worn tread, or a profile mirrored or
+    // upside down) there is no kinematic oscillation and no wavelength: the regression's
+    // (negative) slope is still defined, so that route can go on with the kinematic cells left
+    // empty; the kinematic route cannot.
+    const bool oscillates = std::isfinite(wavelength);
+    if (!oscillates && !regression)
+      throw RunError(where + " the rolling radius difference (" +
+                     CsvWriter::format(delta_r(amplitude)) +
+                     " m) does not restore the wheelset, so there is no kinematic oscillation "
+                     "(regression conicity " +
+                     CsvWriter::format(linear) +
+                     "): is a profile upside down or mirrored (Profiles/Wheel mirrored, Rail "
+                     "mirrored), or use Conicity method = linear regression");
+    const double kinematic = oscillates ? finite(equivalent_conicity(wavelength, e, r0),
+                                                 where + " the kinematic conicity")
+                                        : 0.0;
+    const double gamma = regression ? linear : kinematic;
+    // NaN flange shift (no flange contact in the table) compares false: not reached.
+    const bool reaches = amplitude >= flange_shift;
+    conicity.write_row({CsvWriter::format(amplitude),
+                        oscillates ? CsvWriter::format(wavelength) : std::string(),
+                        oscillates ? CsvWriter::format(kinematic) : std::string(),
+                        CsvWriter::format(linear), CsvWriter::format(gamma), reaches ? "1" : "0"});
     if (std::abs(amplitude - 0.003) < 1e-12)
       context.summary.add(section, "equivalent conicity at 3 mm", gamma);
   }
+  const double load = parameters_->get<double>("Vertical load");
+  if (load > 0)
+    write_elastic_contacts(context, load);
   CsvWriter results(
       context.output.staging_path("contact_summary.csv"),
       {"step", "flange_contact_right_m", "flange_contact_left_m", "half_contact_distance_m",
        "centred_rolling_radius_m", "table_rows_not_converged"},
       root);
-  results.write_row({context.step_name,
-                     CsvWriter::format(table.flange_contact_shift(TrackSide::right)),
-                     CsvWriter::format(table.flange_contact_shift(TrackSide::left)),
-                     CsvWriter::format(e), CsvWriter::format(r0), std::to_string(unconverged)});
+  // No flange contact within the table (a cone, a short table): an empty cell, not NaN.
+  auto shift_cell = [&](TrackSide side) {
+    const double shift = table.flange_contact_shift(side);
+    return std::isfinite(shift) ? CsvWriter::format(shift) : std::string();
+  };
+  results.write_row({context.step_name, shift_cell(TrackSide::right), shift_cell(TrackSide::left),
+                     CsvWriter::format(finite(e, context.path + ": the half contact distance")),
+                     CsvWriter::format(finite(r0, context.path + ": the centred rolling radius")),
+                     std::to_string(unconverged)});
   results.flush();
   context.summary.add(section, "table rows", static_cast<double>(table.rows().size()));
   context.summary.add(section, "table rows not converged", unconverged);
-  context.summary.add(section, "flange contact from, right",
-                      table.flange_contact_shift(TrackSide::right) * 1e3, "mm");
-  context.summary.add(section, "flange contact from, left",
-                      table.flange_contact_shift(TrackSide::left) * 1e3, "mm");
+  for (TrackSide side : {TrackSide::left, TrackSide::right}) {
+    const double shift = table.flange_contact_shift(side);
+    const std::string key = std::string("flange contact from, ") + side_name(side);
+    if (std::isfinite(shift))
+      context.summary.add(section, key, shift * 1e3, "mm");
+    else
+      context.summary.add(section, key, "not within the table");
+  }
   context.summary.add(section, "half distance between contact points", e, "m");
   context.summary.add(section, "centred rolling radius", r0, "m");
   context.summary.add(section, "pose searches", searches);
@@ -284,6 +382,74 @@ void WheelsetOnTrackStep::run(StepContext& context) {
         {context.output.staging_path("profiles.csv"), context.output.staging_path("contacts.csv"),
          context.output.staging_path("contact_table.csv"),
          context.output.staging_path("geometry.png")});
+}
+
+void WheelsetOnTrackStep::write_elastic_contacts(StepContext& context, double load) {
+  const bool root = context.model.comm().is_root();
+  const std::string section = "Step " + context.step_name + " (wheelset on track)";
+  const double modulus = contact_modulus(
+      {parameters_->get<double>("Young's modulus"), parameters_->get<double>("Poisson's ratio")},
+      {parameters_->get<double>("Young's modulus"), parameters_->get<double>("Poisson's ratio")});
+  CsvWriter patches(context.output.staging_path("elastic_contacts.csv"),
+                    {"contact", "pose", "side", "part", "loaded", "y_m", "z_m", "contact_angle_rad",
+                     "rolling_radius_m", "approach_m", "normal_force_N", "lateral_force_N",
+                     "vertical_force_N", "a_m", "b_m", "max_pressure_Pa", "A_1pm", "B_1pm"},
+                    root);
+  CsvWriter poses(context.output.staging_path("elastic_poses.csv"),
+                  {"pose", "lateral_m", "vertical_m", "roll_rad", "sink_m", "load_N",
+                   "vertical_force_N", "lateral_force_N", "roll_moment_Nm", "iterations"},
+                  root);
+  for (const DeckPose& deck_pose : poses_) {
+    const std::string where = context.path + "/Poses/" + deck_pose.name;
+    const RigidContact rigid =
+        solve_rigid_contact(*geometry_, deck_pose.pose.lateral, deck_pose.pose.yaw, nullptr,
+                            parameters_->get<int>("Check samples"));
+    if (!rigid.converged)
+      throw RunError(where + ": the rigid start of the elastic solution did not converge");
+    const ElasticContact elastic =
+        solve_elastic_contact(*geometry_, rigid, deck_pose.pose.yaw, load, modulus);
+    if (!elastic.converged)
+      throw RunError(where + ": the elastic equilibrium under Vertical load = " +
+                     CsvWriter::format(load) + " N failed: " + elastic.failure);
+    double vertical = 0;
+    for (TrackSide side : {TrackSide::left, TrackSide::right})
+      for (int part = 0; part < 2; ++part) {
+        const ElasticPatch& patch = elastic.patches[static_cast<int>(side)][part];
+        const ContactPoint& c = patch.point;
+        if (!c.valid())
+          continue;
+        const std::string name =
+            deck_pose.name + " " + side_name(side) + (part ? " flange" : " tread");
+        auto number = [&](double value, const char* what) {
+          return CsvWriter::format(finite(value, where + ": " + name + " " + what));
+        };
+        vertical += patch.force_z;
+        patches.write_row(
+            {name, deck_pose.name, side_name(side), part ? "flange" : "tread",
+             patch.loaded() ? "1" : "0", number(c.rail_point.y, "y"), number(c.rail_point.z, "z"),
+             number(c.contact_angle, "contact angle"), number(c.rolling_radius, "rolling radius"),
+             number(patch.hertz.approach, "approach"), number(patch.hertz.load, "normal force"),
+             number(patch.force_y, "lateral force"), number(patch.force_z, "vertical force"),
+             number(patch.hertz.a, "a"), number(patch.hertz.b, "b"),
+             number(patch.hertz.pressure, "pressure"), number(c.relative_curvature_rolling(), "A"),
+             number(c.relative_curvature_lateral(), "B")});
+      }
+    poses.write_row({deck_pose.name, CsvWriter::format(elastic.pose.lateral),
+                     CsvWriter::format(elastic.pose.vertical), CsvWriter::format(elastic.pose.roll),
+                     CsvWriter::format(elastic.pose.vertical - rigid.vertical),
+                     CsvWriter::format(load), CsvWriter::format(-vertical),
+                     CsvWriter::format(elastic.lateral_force),
+                     CsvWriter::format(elastic.roll_residual), std::to_string(elastic.iterations)});
+    if (std::abs(deck_pose.pose.lateral) < 1e-15) {
+      const ElasticPatch& right = elastic.patches[1][0];
+      context.summary.add(section, "elastic centred contact angle, right tread",
+                          right.point.contact_angle * 180 / M_PI, "degree");
+      context.summary.add(section, "elastic centred max pressure, right tread",
+                          right.hertz.pressure / 1e6, "MPa");
+    }
+  }
+  patches.flush();
+  poses.flush();
 }
 
 }  // namespace railfe

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "contact/geometry/wheel_rail_geometry.hpp"
+
 #include "framework/app/module.hpp"
 
 namespace railfe {
@@ -29,6 +30,10 @@ class WheelsetOnTrackStep : public AnalysisStep {
   void run(StepContext& context) override;
 
  private:
+  /// Solves every pose elastically under \p load (N per wheelset) and writes
+  /// elastic_contacts.csv (one row per patch) and elastic_poses.csv (balances per pose).
+  void write_elastic_contacts(StepContext& context, double load);
+
   const Teuchos::ParameterList* parameters_;
   std::unique_ptr<WheelRailGeometry> geometry_;
   std::vector<DeckPose> poses_;

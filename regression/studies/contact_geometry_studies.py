@@ -12,8 +12,14 @@ resolution  speed against accuracy of the rigid contact table, for table steps f
             flange contact shift. The median shows the smooth stretches (second order in the
             step); the RMS is set by the contact jumps, which interpolation smears over one step.
 
-    /usr/bin/python3 regression/studies/contact_geometry_studies.py [stability|resolution|all] \
-        [build/bin/railfe-contact-geometry]
+conicity    equivalent conicity by the kinematic wavelength and by EN 15302's linear regression
+            (Annex C) side by side, amplitudes 0.5 to 8 mm, through railfe's wheelset-on-track
+            scene: a 1:40 cone on 300 mm crowns (the answer is the cone's slope, corrected for
+            the roll of the rigid wheelset), S1002 on 60E1 1:40 (flange contact from 6.3 mm) and
+            the measured worn pair (worn_high_mileage on site_b_hr).
+
+    /usr/bin/python3 regression/studies/contact_geometry_studies.py \
+        [stability|resolution|conicity|all] [build/bin/railfe-contact-geometry] [build/bin/railfe]
 
 Writes docs/data/<study>.csv and docs/img/<study>.png.
 """
@@ -21,6 +27,7 @@ import csv
 import os
 import subprocess
 import sys
+import tempfile
 
 import matplotlib
 
@@ -98,6 +105,94 @@ def resolution_chart(tool):
     print("wrote", png)
 
 
+# The pairs of the conicity study: name, Profiles parameters, Track parameters, deck-relative
+# paths resolved against inputs/.
+CONICITY_PAIRS = [
+    ("1:40 cone on 300 mm crowns",
+     {"Rail": "profiles/circ_r300.prr", "Wheel": "verification/wheelset_cone_on_crown/cone_wheel.txt"},
+     {"Gauge": 1.31884813001241}),
+    ("S1002 on 60E1 1:40", {}, {}),
+    ("worn wheel on worn rail",
+     {"Rail": "profiles/site_b_hr.prr", "Wheel": "profiles/worn_high_mileage.prw",
+      "Wheel mirrored": True, "Wheel running point": 0.070, "Rail canted": False}, {}),
+]
+AMPLITUDES = [0.0005 * k for k in range(1, 17)]
+
+
+def parameter(name, value):
+    kind = "bool" if isinstance(value, bool) else "double" if isinstance(value, float) else "string"
+    text = ("true" if value else "false") if isinstance(value, bool) else value
+    return f'<Parameter name="{name}" type="{kind}" value="{text}"/>'
+
+
+def conicity_deck(profiles, track):
+    inputs = os.path.join(ROOT, "inputs")
+    profile_lines = "".join(parameter(k, os.path.join(inputs, v) if k in ("Rail", "Wheel") else v)
+                            for k, v in profiles.items())
+    track_lines = "".join(parameter(k, v) for k, v in track.items())
+    amplitudes = ", ".join(f"{a:g}" for a in AMPLITUDES)
+    return f"""<ParameterList name="railfe"><ParameterList name="Steps"><ParameterList name="conicity">
+  <Parameter name="Module" type="string" value="wheelset on track"/>
+  <ParameterList name="Profiles">{profile_lines}</ParameterList>
+  <ParameterList name="Track">{track_lines}</ParameterList>
+  <Parameter name="Table half range" type="double" value="0.012"/>
+  <Parameter name="Table resolution" type="double" value="1e-5"/>
+  <Parameter name="Conicity amplitudes" type="Array(double)" value="{{{amplitudes}}}"/>
+  <Parameter name="Conicity method" type="string" value="linear regression"/>
+  <Parameter name="Chart" type="bool" value="false"/>
+</ParameterList></ParameterList></ParameterList>
+"""
+
+
+def conicity_chart(railfe):
+    csv_path, png = data_paths("conicity_methods")
+    rows = []
+    with tempfile.TemporaryDirectory() as work:
+        for index, (name, profiles, track) in enumerate(CONICITY_PAIRS):
+            deck = os.path.join(work, f"pair{index}.xml")
+            with open(deck, "w") as f:
+                f.write(conicity_deck(profiles, track))
+            output = os.path.join(work, f"pair{index}")
+            subprocess.run([railfe, deck, "--output", output, "--quiet"], check=True)
+            with open(os.path.join(output, "conicity.csv")) as f:
+                for r in csv.DictReader(f):
+                    rows.append({"pair": name, "amplitude_m": r["amplitude_m"],
+                                 "kinematic_conicity": r["kinematic_conicity"],
+                                 "regression_conicity": r["regression_conicity"],
+                                 "reaches_flange": r["reaches_flange"]})
+    with open(csv_path, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
+        writer.writeheader()
+        writer.writerows(rows)
+    fig, axes = plt.subplots(1, 3, figsize=(13, 4.5))
+    for ax, (name, _, _) in zip(axes, CONICITY_PAIRS):
+        mine = [r for r in rows if r["pair"] == name]
+        amplitude = [1e3 * float(r["amplitude_m"]) for r in mine]
+        # Empty where dr does not restore the wheelset (no kinematic oscillation).
+        kinematic = [(a, float(r["kinematic_conicity"])) for a, r in zip(amplitude, mine)
+                     if r["kinematic_conicity"]]
+        ax.plot([a for a, _ in kinematic], [g for _, g in kinematic], "o-",
+                label="kinematic wavelength")
+        if not kinematic:
+            ax.text(0.5, 0.5, "no kinematic oscillation:\nΔr does not restore (hollow tread)",
+                    transform=ax.transAxes, ha="center", fontsize=8)
+        ax.plot(amplitude, [float(r["regression_conicity"]) for r in mine], "s--",
+                label="linear regression (EN 15302 Annex C)")
+        flange = [a for a, r in zip(amplitude, mine) if r["reaches_flange"] == "1"]
+        if flange:
+            ax.axvspan(min(flange), max(amplitude), color="grey", alpha=0.15,
+                       label="amplitude reaches the flange")
+        ax.set_title(name, fontsize=10)
+        ax.ticklabel_format(axis="y", useOffset=False)
+        ax.set_xlabel("amplitude ŷ (mm)")
+        ax.grid(alpha=0.3)
+    axes[0].set_ylabel("equivalent conicity tan γe")
+    axes[1].legend(fontsize=8, loc="upper center")
+    fig.tight_layout()
+    fig.savefig(png, dpi=110)
+    print("wrote", csv_path, png)
+
+
 def main():
     which = sys.argv[1] if len(sys.argv) > 1 else "all"
     tool = sys.argv[2] if len(sys.argv) > 2 else os.path.join(ROOT, "build", "bin", "railfe-contact-geometry")
@@ -105,6 +200,8 @@ def main():
         stability_chart(tool)
     if which in ("resolution", "all"):
         resolution_chart(tool)
+    if which in ("conicity", "all"):
+        conicity_chart(sys.argv[3] if len(sys.argv) > 3 else os.path.join(ROOT, "build", "bin", "railfe"))
 
 
 if __name__ == "__main__":
