@@ -81,9 +81,10 @@ ParameterSpec wheelset_on_track_parameters() {
       "table, rolling radius difference and equivalent conicity.");
   spec.sublist("Profiles", profile_parameters(), "Profile files.");
   spec.sublist("Track", track_parameters(), "Track and wheelset.");
-  spec.named_sublists("Poses", pose_parameters(),
-                      "Wheelset poses: each row of contacts.csv is one contact (or search) of "
-                      "one wheel in one pose.");
+  spec.named_sublists(
+      "Poses", pose_parameters(),
+      "Wheelset poses: each row of <step>_contacts.csv is one contact (or search) of "
+      "one wheel in one pose.");
   spec.real("Table half range", 0.015, "The table covers lateral shifts -range to +range.", "m",
             Range::closed_open(1e-4, 0.05));
   spec.real("Table resolution", 1e-4, "Step between the table's shifts.", "m",
@@ -96,23 +97,24 @@ ParameterSpec wheelset_on_track_parameters() {
                   "Amplitudes of the kinematic motion for the equivalent conicity (EN 15302); "
                   "at most Table half range.",
                   "m", 0, Range::positive());
-  spec.choice("Conicity method", "kinematic wavelength",
-              {{"kinematic wavelength",
-                "EN 15302 Annex B: the wavelength of the nonlinear kinematic motion, integrated "
-                "over one period"},
-               {"linear regression",
-                "EN 15302 Annex C: least-squares line through dr over a harmonic motion"}},
-              "Which route gives equivalent_conicity and the summary; conicity.csv lists both.");
+  spec.choice(
+      "Conicity method", "kinematic wavelength",
+      {{"kinematic wavelength",
+        "EN 15302 Annex B: the wavelength of the nonlinear kinematic motion, integrated "
+        "over one period"},
+       {"linear regression",
+        "EN 15302 Annex C: least-squares line through dr over a harmonic motion"}},
+      "Which route gives equivalent_conicity and the summary; <step>_conicity.csv lists both.");
   spec.real("Vertical load", 0,
             "Per wheelset, downwards: the poses are also solved elastically (Hertzian patches, "
-            "elastic_contacts.csv); 0 = rigid geometry only.",
+            "<step>_elastic_contacts.csv); 0 = rigid geometry only.",
             "N", Range::closed(0.0, 1e7));
   spec.real("Young's modulus", 210e9, "Of wheel and rail (elastic poses).", "Pa",
             Range::closed(1e9, 1e13));
   spec.real("Poisson's ratio", 0.28, "Of wheel and rail (elastic poses).", "",
             Range::closed_open(0.0, 0.5));
   spec.flag("Chart", true,
-            "Draw geometry.png: profiles with contact points, rolling radius difference and "
+            "Draw <step>_geometry.png: profiles with contact points, rolling radius difference and "
             "contact angles against the shift (needs python3 with matplotlib).");
   return spec;
 }

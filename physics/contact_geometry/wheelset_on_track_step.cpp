@@ -147,7 +147,7 @@ void WheelsetOnTrackStep::run(StepContext& context) {
   const ContactTable table(geometry, range, 2 * half_rows + 1, check_samples);
   progress.finish();
 
-  CsvWriter rows(context.output.staging_path("contact_table.csv"),
+  CsvWriter rows(context.output.staging_path(context.step_name + "_contact_table.csv"),
                  {"lateral_m", "vertical_m", "roll_rad", "delta_r_m", "converged", "left_part",
                   "left_rolling_radius_m", "left_contact_angle_rad", "left_y_m", "right_part",
                   "right_rolling_radius_m", "right_contact_angle_rad", "right_y_m"},
@@ -176,7 +176,7 @@ void WheelsetOnTrackStep::run(StepContext& context) {
     rows.write_row(cells);
   }
 
-  CsvWriter contacts(context.output.staging_path("contacts.csv"),
+  CsvWriter contacts(context.output.staging_path(context.step_name + "_contacts.csv"),
                      {"contact",
                       "pose",
                       "lateral_m",
@@ -269,7 +269,7 @@ void WheelsetOnTrackStep::run(StepContext& context) {
   const double flange_shift = std::min(std::abs(table.flange_contact_shift(TrackSide::right)),
                                        std::abs(table.flange_contact_shift(TrackSide::left)));
   const bool regression = parameters_->get<std::string>("Conicity method") == "linear regression";
-  CsvWriter conicity(context.output.staging_path("conicity.csv"),
+  CsvWriter conicity(context.output.staging_path(context.step_name + "_conicity.csv"),
                      {"amplitude_m", "wavelength_m", "kinematic_conicity", "regression_conicity",
                       "equivalent_conicity", "reaches_flange"},
                      root);
@@ -310,7 +310,7 @@ void WheelsetOnTrackStep::run(StepContext& context) {
   if (load > 0)
     write_elastic_contacts(context, load);
   CsvWriter results(
-      context.output.staging_path("contact_summary.csv"),
+      context.output.staging_path(context.step_name + "_contact_summary.csv"),
       {"step", "flange_contact_right_m", "flange_contact_left_m", "half_contact_distance_m",
        "centred_rolling_radius_m", "table_rows_not_converged"},
       root);
@@ -343,9 +343,10 @@ void WheelsetOnTrackStep::run(StepContext& context) {
   if (unconverged > 0)
     context.summary.add(section, "warning",
                         std::to_string(unconverged) +
-                            " table rows did not converge (see converged in contact_table.csv)");
+                            " table rows did not converge (see converged in " + context.step_name +
+                            "_contact_table.csv)");
 
-  CsvWriter profile_points(context.output.staging_path("profiles.csv"),
+  CsvWriter profile_points(context.output.staging_path(context.step_name + "_profiles.csv"),
                            {"pose", "body", "side", "y_m", "z_m"}, root);
   for (TrackSide side : {TrackSide::left, TrackSide::right}) {
     const ProfileCurve& rail = geometry.rail(side);
@@ -377,11 +378,11 @@ void WheelsetOnTrackStep::run(StepContext& context) {
   conicity.flush();
   profile_points.flush();
   if (parameters_->get<bool>("Chart"))
-    draw_chart(
-        context, section, "contact_geometry_chart.py",
-        {context.output.staging_path("profiles.csv"), context.output.staging_path("contacts.csv"),
-         context.output.staging_path("contact_table.csv"),
-         context.output.staging_path("geometry.png")});
+    draw_chart(context, section, "contact_geometry_chart.py",
+               {context.output.staging_path(context.step_name + "_profiles.csv"),
+                context.output.staging_path(context.step_name + "_contacts.csv"),
+                context.output.staging_path(context.step_name + "_contact_table.csv"),
+                context.output.staging_path(context.step_name + "_geometry.png")});
 }
 
 void WheelsetOnTrackStep::write_elastic_contacts(StepContext& context, double load) {
@@ -390,12 +391,12 @@ void WheelsetOnTrackStep::write_elastic_contacts(StepContext& context, double lo
   const double modulus = contact_modulus(
       {parameters_->get<double>("Young's modulus"), parameters_->get<double>("Poisson's ratio")},
       {parameters_->get<double>("Young's modulus"), parameters_->get<double>("Poisson's ratio")});
-  CsvWriter patches(context.output.staging_path("elastic_contacts.csv"),
+  CsvWriter patches(context.output.staging_path(context.step_name + "_elastic_contacts.csv"),
                     {"contact", "pose", "side", "part", "loaded", "y_m", "z_m", "contact_angle_rad",
                      "rolling_radius_m", "approach_m", "normal_force_N", "lateral_force_N",
                      "vertical_force_N", "a_m", "b_m", "max_pressure_Pa", "A_1pm", "B_1pm"},
                     root);
-  CsvWriter poses(context.output.staging_path("elastic_poses.csv"),
+  CsvWriter poses(context.output.staging_path(context.step_name + "_elastic_poses.csv"),
                   {"pose", "lateral_m", "vertical_m", "roll_rad", "sink_m", "load_N",
                    "vertical_force_N", "lateral_force_N", "roll_moment_Nm", "iterations"},
                   root);

@@ -154,7 +154,7 @@ def conicity_chart(railfe):
                 f.write(conicity_deck(profiles, track))
             output = os.path.join(work, f"pair{index}")
             subprocess.run([railfe, deck, "--output", output, "--quiet"], check=True)
-            with open(os.path.join(output, "conicity.csv")) as f:
+            with open(os.path.join(output, "conicity_conicity.csv")) as f:
                 for r in csv.DictReader(f):
                     rows.append({"pair": name, "amplitude_m": r["amplitude_m"],
                                  "kinematic_conicity": r["kinematic_conicity"],
