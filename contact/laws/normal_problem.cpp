@@ -102,18 +102,27 @@ NormalSolution solve_normal(const HalfSpaceKernels& kernels, const std::vector<d
 }
 
 HertzPatch solve_hertz_patch(const HertzContact& hertz, double G, double nu, int m) {
-  const double reach = std::max(1.1, 1 / (1 - 3.0 / m));
-  const ContactGrid grid{
-      -reach * hertz.a, -reach * hertz.b, 2 * reach * hertz.a / m, 2 * reach * hertz.b / m, m, m};
+  return solve_hertz_patch(hertz, G, nu, m, m);
+}
+
+HertzPatch solve_hertz_patch(const HertzContact& hertz, double G, double nu, int mx, int my) {
+  const double reach_x = std::max(1.1, 1 / (1 - 3.0 / mx)),
+               reach_y = std::max(1.1, 1 / (1 - 3.0 / my));
+  const ContactGrid grid{-reach_x * hertz.a,
+                         -reach_y * hertz.b,
+                         2 * reach_x * hertz.a / mx,
+                         2 * reach_y * hertz.b / my,
+                         mx,
+                         my};
   HertzPatch patch;
   patch.kernels = std::make_unique<HalfSpaceKernels>(grid, G, nu);
   std::vector<double> separation(grid.size()), start(grid.size());
-  for (int j = 0; j < m; ++j)
-    for (int i = 0; i < m; ++i) {
+  for (int j = 0; j < my; ++j)
+    for (int i = 0; i < mx; ++i) {
       const double x = grid.x(i), y = grid.y(j);
-      separation[j * m + i] = hertz.A * x * x + hertz.B * y * y;
+      separation[j * mx + i] = hertz.A * x * x + hertz.B * y * y;
       const double inside = 1 - (x / hertz.a) * (x / hertz.a) - (y / hertz.b) * (y / hertz.b);
-      start[j * m + i] = hertz.pressure * std::sqrt(std::max(inside, 0.0));
+      start[j * mx + i] = hertz.pressure * std::sqrt(std::max(inside, 0.0));
     }
   patch.normal = solve_normal(*patch.kernels, separation, hertz.load, 1e-10, 2000, &start);
   return patch;
