@@ -223,19 +223,19 @@ TEST(ExactSolver, CentralStripOfALongEllipseIsCartersRollingCylinder) {
 
 TEST(ExactSolver, FallingFrictionThatLeavesTheSteadyStateOpenIsReported) {
   // Coulomb friction: one steady state. Friction falling steeply with slip velocity (μs 0.4,
-  // μd 0.25, c 1e4 s/m at 30 m/s): starting from no traction and from full slip ends in states
-  // 9e-4 μN apart, so no force is returned.
+  // μd 0.1, c 100 s/m at 30 m/s): starting from no traction and from full slip ends in states
+  // 8e-3 μN apart, so no force is returned.
   const Patch patch(20);
   FrictionLaw falling;
   falling.static_coefficient = 0.4;
-  falling.dynamic_coefficient = 0.25;
-  falling.decay = 1e4;
+  falling.dynamic_coefficient = 0.1;
+  falling.decay = 100;
   double spread = -1;
   const TangentialSolution open = solve_steady_rolling(patch.kernels, patch.normal.pressure,
                                                        {2e-3, 0, 0}, falling, 1e-6, &spread);
   EXPECT_FALSE(open.converged);
   EXPECT_TRUE(std::isnan(open.forces.Fx));
-  EXPECT_GT(spread, 1e-4);
+  EXPECT_GT(spread, 1e-3);
   FrictionLaw mild = falling;
   mild.decay = 10;
   const TangentialSolution settled =
