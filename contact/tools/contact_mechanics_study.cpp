@@ -3,7 +3,10 @@
 // than one steady state as friction falls with slip velocity (Hertz patch of the issue's
 // wheel on a crown, 20 x 20 grid, ξ = 2e-3, V = 30 m/s, μs = 0.4). "creep-table OUT.csv" builds
 // the creep-force table shipped as inputs/kalker/creep_table_nu030.csv (exact solver at 30 x 30,
-// about a minute). "benchmark OUT.csv" times every theory (regression/benchmarks/contact_laws.py).
+// about a minute). "benchmark OUT.csv" times every theory and the case timed against Kalker's
+// CONTACT (regression/benchmarks/contact_laws.py). "spin-convergence OUT.csv" follows C23, C33
+// and the spin cases over the grid for both transport schemes
+// (regression/studies/exact_spin_convergence.py).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
