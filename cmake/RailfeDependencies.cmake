@@ -7,6 +7,9 @@ find_package(ExodusII REQUIRED)
 find_package(CHOLMOD REQUIRED)
 find_package(MuParser REQUIRED)
 find_package(Eigen3 3.3 REQUIRED NO_MODULE)
+# FFTW 3 (Debian's libfftw3-dev): the exact contact solver's half-space convolutions.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(FFTW3 REQUIRED IMPORTED_TARGET fftw3)
 find_package(GTest REQUIRED)
 
 # Trilinos' exported MPI library list is empty, so MPI is linked explicitly. Trilinos headers are

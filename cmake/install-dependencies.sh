@@ -10,6 +10,7 @@ packages=(
   libsuitesparse-dev libmetis-dev                   # CHOLMOD supernodal Cholesky with METIS ordering
   libopenblas0-serial                               # optimized BLAS/LAPACK (CHOLMOD: 10x over reference BLAS)
   libeigen3-dev libmuparser-dev                     # small dense element math; deck expressions
+  libfftw3-dev                                      # FFTs of the exact contact solver
   libopenmpi-dev openmpi-bin libgtest-dev
   gmsh python3 python3-matplotlib python3-numpy     # meshing; charts and studies
   python3-scipy                                     # modal benchmark reference (eigsh)

@@ -32,9 +32,12 @@ class HalfSpaceKernels {
   /// Kernels for \p grid, combined shear modulus \p G and Poisson's ratio \p nu of both bodies.
   HalfSpaceKernels(const ContactGrid& grid, double G, double nu);
   /// Normal displacement difference (m) of the pressures \p p (Pa), element-wise: a
-  /// convolution, evaluated by real FFTs on the grid padded to twice its size (the padding's
-  /// zero rows are skipped).
+  /// convolution, evaluated by FFTW's real transforms on the grid padded to twice its size,
+  /// with the plans measured once per size and thread.
   std::vector<double> normal(const std::vector<double>& p) const;
+  /// Adds to \p u the normal displacement difference of pressure \p pressure (Pa) on element
+  /// \p element alone: a column of the influence matrix, for updates that touch few elements.
+  void add_normal_influence(int element, double pressure, std::vector<double>& u) const;
   /// The same by direct summation (for checking the FFT).
   std::vector<double> normal_direct(const std::vector<double>& p) const;
   /// Tangential displacement differences (m) of the shear tractions \p px, \p py (Pa).
@@ -64,10 +67,8 @@ class HalfSpaceKernels {
   int wx_, wy_;  // kernel widths 2 mx - 1, 2 my - 1
   std::vector<double> zz_, xx_, yy_, xy_;
   // Half spectrum ((mx + 1) × 2my, x fastest) of the normal kernel wrapped onto the grid padded
-  // to 2mx × 2my: the kernel and the pressures are real.
+  // to 2mx × 2my, divided by the padded size (the inverse transform is unnormalised).
   std::vector<std::complex<double>> zz_spectrum_;
-  std::vector<std::complex<double>> half_spectrum(const std::vector<double>& padded,
-                                                  int rows) const;
   void convolve(const std::vector<double>& kernel, const std::vector<double>& in,
                 std::vector<double>& out, bool accumulate) const;
 };

@@ -45,4 +45,8 @@ struct HertzPatch {
 /// Starts from Hertz's pressure.
 HertzPatch solve_hertz_patch(const HertzContact& hertz, double G, double nu, int m);
 
+/// The same on an \p mx × \p my grid (\p mx along the rolling direction), each side reaching 10 %
+/// (and at least 1.5 elements) beyond the ellipse: the grids of Kalker's CONTACT program.
+HertzPatch solve_hertz_patch(const HertzContact& hertz, double G, double nu, int mx, int my);
+
 }  // namespace railfe
