@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <sstream>
 
@@ -125,6 +126,16 @@ void ExplicitStep::check(const CheckContext& context) {
                       "a shorter End time, a larger Maximum steps, or material constants and a "
                       "mesh that allow a larger step");
   }
+  // Within the budget a run can still take days: say so before it starts, not after. 0.2 us
+  // per element-step is this kernel's cost on one core (docs/benchmarks.md), a lower bound.
+  const double element_steps = steps_needed * static_cast<double>(mesh.n_elements());
+  estimated_hours_ = element_steps * 0.2e-6 / context.model.comm().n_ranks() / 3600;
+  if (estimated_hours_ > 24 && context.model.comm().is_root())
+    std::fprintf(stderr,
+                 "railfe: warning: %s: about %.3g steps of %.3g elements will take at least %.3g "
+                 "hours; shorten End time or coarsen the mesh if that is not intended\n",
+                 context.path.c_str(), steps_needed, static_cast<double>(mesh.n_elements()),
+                 estimated_hours_);
   if (!settings_->start_from.empty()) {
     const auto& steps = context.model.deck().parameters->sublist("Steps");
     bool found = false;
@@ -257,6 +268,9 @@ void ExplicitStep::run(StepContext& context) {
               fixed_step ? "fixed " + seconds_text(settings.time_step)
                          : "automatic, safety factor " + std::to_string(settings.safety_factor));
   summary.add(section, "steps", static_cast<double>(solver.n_steps()));
+  if (estimated_hours_ > 24)
+    summary.add(section, "warning",
+                "estimated at least " + std::to_string(estimated_hours_) + " hours before it ran");
   if (restarted)
     summary.add(section, "resumed from checkpoint at step", static_cast<double>(first_step));
   summary.add(section, "energy error at end", recorder.last_balance().error);

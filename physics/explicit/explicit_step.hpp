@@ -22,6 +22,7 @@ class ExplicitStep : public AnalysisStep {
   const Teuchos::ParameterList* parameters_;
   std::optional<ExplicitSettings> settings_;
   std::optional<MaterialTable> materials_;
+  double estimated_hours_ = 0;  // lower estimate of the run's wall time, from check()
 };
 
 }  // namespace railfe
