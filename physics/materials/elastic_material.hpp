@@ -65,7 +65,8 @@ class MaterialTable {
 /// (\p step describes the step in the message, e.g. "the statics step 'load'"), a solid block
 /// has no material, or a material asks for the enhanced-strain element and \p enhanced_strain
 /// says the step's module cannot use it (a choice is refused rather than silently ignored).
-MaterialTable solid_materials(const Model& model, const std::string& step,
-                              EnhancedStrainSupport enhanced_strain = EnhancedStrainSupport::refused);
+MaterialTable solid_materials(
+    const Model& model, const std::string& step,
+    EnhancedStrainSupport enhanced_strain = EnhancedStrainSupport::refused);
 
 }  // namespace railfe

@@ -59,7 +59,7 @@ TEST(Hex8EnhancedStrain, SymmetricWithExactlySixRigidBodyModes) {
     Eigen::Matrix<double, 24, 1> u;
     for (int a = 0; a < 8; ++a) {
       const double* p = x[a];
-      const double rigid[6][3] = {{1, 0, 0}, {0, 1, 0},     {0, 0, 1},
+      const double rigid[6][3] = {{1, 0, 0},        {0, 1, 0},        {0, 0, 1},
                                   {0, -p[2], p[1]}, {p[2], 0, -p[0]}, {-p[1], p[0], 0}};
       for (int d = 0; d < 3; ++d)
         u(3 * a + d) = rigid[mode][d];
@@ -77,8 +77,8 @@ TEST(Hex8EnhancedStrain, LinearFieldLoadsTheElementLikeTheTrilinearOne) {
   Eigen::Matrix<double, 24, 1> u;
   for (int a = 0; a < 8; ++a) {
     for (int i = 0; i < 3; ++i) {
-      u(3 * a + i) = 1e-3 * (gradient[i][0] * x[a][0] + gradient[i][1] * x[a][1] +
-                             gradient[i][2] * x[a][2]);
+      u(3 * a + i) =
+          1e-3 * (gradient[i][0] * x[a][0] + gradient[i][1] * x[a][1] + gradient[i][2] * x[a][2]);
     }
   }
   const Eigen::Matrix<double, 24, 1> expected = full(x) * u;
