@@ -11,6 +11,7 @@
 #include "framework/base/error.hpp"
 #include "framework/deck/expression.hpp"
 #include "framework/mesh/hex8_topology.hpp"
+#include "physics/elements/hex8_enhanced_strain.hpp"
 
 namespace railfe {
 
@@ -56,7 +57,12 @@ void assemble_elastic_stiffness(FeMatrix& K, const MaterialTable& materials, Pro
   assemble_hex8_matrix(
       K,
       [&](int block, const double x[8][3], double* matrix) {
-        hex8_stiffness(x, materials.of_block(block).lame(), matrix);
+        const ElasticMaterial& material = materials.of_block(block);
+        if (material.element == SolidElement::enhanced_strain) {
+          hex8_enhanced_strain_stiffness(x, material.lame(), matrix);
+        } else {
+          hex8_stiffness(x, material.lame(), matrix);
+        }
       },
       progress);
 }

@@ -21,8 +21,9 @@ namespace railfe {
 void element_coordinates(const MeshPartition& partition, const LocalBlock& block,
                          LocalIndex element, double x[8][3]);
 
-/// Assembles the stiffness of every local hex8 element into \p K (collective), reporting to
-/// \p progress (in local elements) if given.
+/// Assembles the stiffness of every local hex8 element into \p K (collective), in the formulation
+/// its material chooses (ElasticMaterial::element), reporting to \p progress (in local elements)
+/// if given.
 void assemble_elastic_stiffness(FeMatrix& K, const MaterialTable& materials,
                                 Progress* progress = nullptr);
 
@@ -48,8 +49,8 @@ void add_solid_constraints(
     LinearConstraints& constraints);
 
 /// Centre stresses (6 per element: xx, yy, zz, xy, yz, zx) of the local hex8 elements in
-/// partition order, from displacements \p u_overlap over the overlapping DOFs; other element
-/// types get zeros.
+/// partition order, from displacements \p u_overlap over the overlapping DOFs (exact for both
+/// formulations: the enhanced strains vanish at the centre); other element types get zeros.
 std::vector<double> element_stresses(const MeshPartition& partition, const MaterialTable& materials,
                                      const double* u_overlap);
 

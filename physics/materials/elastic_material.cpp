@@ -17,6 +17,14 @@ ParameterSpec materials_parameters() {
   // Up to 1e9 leaves room for explicit mass scaling (steel x 1e5).
   material.required_real("Density", "Mass density rho.", "kg/m^3", Range::open_closed(0, 1e9));
   material.required_text_array("Blocks", "Element blocks made of this material.");
+  material.choice(
+      "Element", "full integration",
+      {{"full integration", "trilinear hex8, 2x2x2 Gauss points (locks in thin bending)"},
+       {"enhanced strain",
+        "hex8 with nine condensed enhanced-strain modes (Simo-Rifai): accurate in bending with "
+        "one element through the thickness; statics and modal only"}},
+      "Hex8 formulation of these blocks in statics and modal steps (the explicit module has its "
+      "own, set in its Solid list).");
   // The section is itself the list of user-named materials.
   ParameterSpec section("Materials, one sublist each, under a name of your choice.");
   section.list()->set(kAnyName, *material.list(), material.doc());
@@ -31,6 +39,8 @@ MaterialTable::MaterialTable(const Teuchos::ParameterList& materials, const Mesh
     const auto& entry = materials.sublist(name);
     ElasticMaterial material{name, entry.get<double>("Young's modulus"),
                              entry.get<double>("Poisson's ratio"), entry.get<double>("Density")};
+    if (entry.isParameter("Element") && entry.get<std::string>("Element") == "enhanced strain")
+      material.element = SolidElement::enhanced_strain;
     const int index = static_cast<int>(materials_.size());
     materials_.push_back(material);
     for (const auto& block_name : entry.get<Teuchos::Array<std::string>>("Blocks")) {
@@ -57,14 +67,29 @@ void MaterialTable::require_solid_blocks(const Mesh& mesh, const std::string& de
   }
 }
 
-MaterialTable solid_materials(const Model& model, const std::string& step) {
+MaterialTable solid_materials(const Model& model, const std::string& step,
+                              EnhancedStrainSupport enhanced_strain) {
   const std::string& deck = model.deck().source;
   if (!model.has_section("Materials")) {
     throw_input_error(deck, "Materials",
                       "missing: " + step + " needs a material for every solid block",
                       "a Materials section");
   }
-  MaterialTable table(model.section("Materials"), model.mesh(), deck);
+  const Teuchos::ParameterList& section = model.section("Materials");
+  if (enhanced_strain == EnhancedStrainSupport::refused) {
+    for (auto it = section.begin(); it != section.end(); ++it) {
+      const std::string name = section.name(it);
+      const auto& entry = section.sublist(name);
+      if (entry.isParameter("Element") && entry.get<std::string>("Element") != "full integration") {
+        throw_input_error(deck, "Materials/" + name + "/Element",
+                          "'" + entry.get<std::string>("Element") + "' is not available in " +
+                              step + " (its module has its own hex8 kernel)",
+                          "'full integration' (or leave Element out) for a material used by this "
+                          "step; 'enhanced strain' works in statics and modal steps");
+      }
+    }
+  }
+  MaterialTable table(section, model.mesh(), deck);
   table.require_solid_blocks(model.mesh(), deck, "Materials");
   return table;
 }

@@ -16,12 +16,23 @@ namespace railfe {
 
 class Model;
 
+/// The hex8 formulation of a material's blocks in the implicit modules (statics, modal).
+enum class SolidElement {
+  full_integration,  ///< trilinear, 2×2×2 Gauss points (hex8.hpp): locks in thin bending
+  enhanced_strain,   ///< plus nine condensed strain modes (hex8_enhanced_strain.hpp)
+};
+
+/// Whether a module can use the enhanced-strain hex8 (the explicit module has its own kernel).
+enum class EnhancedStrainSupport { refused, supported };
+
 /// An isotropic linear elastic material.
 struct ElasticMaterial {
   std::string name;    ///< the name of its sublist in Materials
   double young = 0;    ///< Young's modulus E (Pa)
   double poisson = 0;  ///< Poisson's ratio ν
   double density = 0;  ///< mass density ρ (kg/m³)
+  /// the hex8 formulation of its blocks
+  SolidElement element = SolidElement::full_integration;
   /// λ and μ.
   LameConstants lame() const { return lame_constants(young, poisson); }
 };
@@ -51,8 +62,11 @@ class MaterialTable {
 
 /// The materials of a step that needs one for every solid (hex8) block: reads the deck's
 /// Materials section of \p model. Throws InputError naming the deck when the section is missing
-/// (\p step describes the step in the message, e.g. "the statics step 'load'") or a solid block
-/// has no material.
-MaterialTable solid_materials(const Model& model, const std::string& step);
+/// (\p step describes the step in the message, e.g. "the statics step 'load'"), a solid block
+/// has no material, or a material asks for the enhanced-strain element and \p enhanced_strain
+/// says the step's module cannot use it (a choice is refused rather than silently ignored).
+MaterialTable solid_materials(
+    const Model& model, const std::string& step,
+    EnhancedStrainSupport enhanced_strain = EnhancedStrainSupport::refused);
 
 }  // namespace railfe

@@ -143,7 +143,8 @@ void ModalStep::check(const CheckContext& context) {
   const Mesh& mesh = context.model.mesh();
   const std::string& deck = context.source();
   const std::string& path = context.path;
-  materials_ = solid_materials(context.model, "the modal step '" + context.step_name + "'");
+  materials_ = solid_materials(context.model, "the modal step '" + context.step_name + "'",
+                               EnhancedStrainSupport::supported);
   for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
     if (materials_->has_material(static_cast<int>(b)) &&
         !(materials_->of_block(static_cast<int>(b)).density > 0)) {

@@ -39,7 +39,8 @@ void StaticsStep::check(const CheckContext& context) {
   const std::string& deck = context.source();
   conditions_ = read_solid_conditions(*parameters_, deck, context.path);
   check_solid_conditions(conditions_, mesh, deck, context.path);
-  materials_ = solid_materials(context.model, "the statics step '" + context.step_name + "'");
+  materials_ = solid_materials(context.model, "the statics step '" + context.step_name + "'",
+                               EnhancedStrainSupport::supported);
   for (const auto& force : conditions_.nodal_forces) {
     bool attached = false;
     for (GlobalIndex node : mesh.node_set(force.node_set, deck, "").nodes) {

@@ -8,9 +8,13 @@ solvers, and writes
   docs/img/cantilever_convergence.png    error against DOFs and against wall time
 and prints the Markdown table used in docs/verification.md.
 
+With --elements it instead compares the two hex8 formulations (Materials/.../Element: full
+integration and enhanced strain) on n = 1, 2, 4, 8 with cholmod, against the converged value of
+the table above, and writes docs/data/cantilever_elements.csv and docs/img/cantilever_elements.png.
+
 Run from the repository root after building:
   /usr/bin/python3 regression/studies/cantilever_convergence.py [--railfe build/bin/railfe]
-                                                               [--largest 32]
+                                                               [--largest 32] [--elements]
 """
 import argparse
 import csv
@@ -32,9 +36,74 @@ SOLVERS = {
 }
 
 
-def deck(n, solver):
-    return box_statics_deck((L, B, B), (10 * n, n, n), "xmin", "xmax",
+ELEMENTS = ("full integration", "enhanced strain")
+
+
+def deck(n, solver, element="full integration"):
+    text = box_statics_deck((L, B, B), (10 * n, n, n), "xmin", "xmax",
                             ("Total force", (0, 0, -P)), SOLVERS[solver], probe="xmax")
+    blocks = '      <Parameter name="Blocks"'
+    assert text.count(blocks) == 1
+    return text.replace(blocks, f'      <Parameter name="Element" type="string" value="{element}"/>\n'
+                        + blocks)
+
+
+def converged_from_table():
+    """The converged tip deflection of the full-integration series in the stored table."""
+    with open("docs/data/cantilever_convergence.csv") as table:
+        reference = next(r for r in csv.DictReader(table) if r["solver"] == "cg + muelu-sa")
+    return float(reference["tip_deflection_m"]) / (1 + float(reference["error_vs_converged"]))
+
+
+def compare_elements(args):
+    converged = converged_from_table()
+    rows = []
+    for element in ELEMENTS:
+        for n in (1, 2, 4, 8):
+            name = f"n{n}_{element.replace(' ', '_')}"
+            print(f"running n = {n} with the {element} hex8", flush=True)
+            results, summary = run_deck(args.railfe, deck(n, "cholmod", element), args.work, name)
+            tip = next(r for r in csv_rows(os.path.join(results, "load_probes.csv"))
+                       if r["probe"] == "xmax")
+            deflection = -float(tip["uz_m"])
+            rows.append({"element": element, "elements_through_thickness": n,
+                         "dofs": int(step_section(summary, "load")["degrees of freedom"]),
+                         "tip_deflection_m": deflection,
+                         "wall_time_s": summary["Wall time"]["total [s]"],
+                         "error_vs_converged": deflection / converged - 1,
+                         "error_vs_timoshenko": deflection / TIMOSHENKO - 1})
+    with open("docs/data/cantilever_elements.csv", "w", newline="") as out:
+        writer = csv.DictWriter(out, fieldnames=list(rows[0].keys()))
+        writer.writeheader()
+        writer.writerows(rows)
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    figure, axis = plt.subplots(figsize=(6, 4.3))
+    for element, marker in zip(ELEMENTS, "os"):
+        runs = [r for r in rows if r["element"] == element]
+        axis.loglog([r["dofs"] for r in runs], [abs(r["error_vs_converged"]) for r in runs],
+                    marker + "-", label=element)
+        for r in runs:
+            axis.annotate(f"n={r['elements_through_thickness']}",
+                          (r["dofs"], abs(r["error_vs_converged"])), textcoords="offset points",
+                          xytext=(4, 4), fontsize=7)
+    axis.set_xlabel("degrees of freedom (10n x n x n elements)")
+    axis.set_ylabel("|tip deflection error| vs converged 3-D value")
+    axis.set_title("Cantilever tip load: hex8 formulations")
+    axis.legend(fontsize=8)
+    axis.grid(True, which="both", alpha=0.3)
+    figure.tight_layout()
+    figure.savefig("docs/img/cantilever_elements.png", dpi=120)
+    print(f"\nTimoshenko {TIMOSHENKO:.6e} m, converged 3-D {converged:.6e} m\n")
+    print("| element | n | DOFs | tip deflection (m) | error vs converged | error vs Timoshenko "
+          "| wall time (s) |")
+    print("|---|---|---|---|---|---|---|")
+    for r in rows:
+        print(f"| {r['element']} | {r['elements_through_thickness']} | {r['dofs']} | "
+              f"{r['tip_deflection_m']:.6e} | {r['error_vs_converged']:+.3%} | "
+              f"{r['error_vs_timoshenko']:+.3%} | {r['wall_time_s']:.3f} |")
 
 
 def main():
@@ -45,7 +114,12 @@ def main():
     parser.add_argument("--work", default="build/studies/cantilever")
     parser.add_argument("--plot-only", action="store_true",
                         help="redraw the chart from docs/data/cantilever_convergence.csv")
+    parser.add_argument("--elements", action="store_true",
+                        help="compare the full-integration and enhanced-strain hex8 instead")
     args = parser.parse_args()
+    if args.elements:
+        compare_elements(args)
+        return
     if args.plot_only:
         with open("docs/data/cantilever_convergence.csv") as table:
             rows = [{k: (v if k == "solver" else float(v)) for k, v in r.items()}
