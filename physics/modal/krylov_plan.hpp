@@ -4,8 +4,9 @@
 /// hold no more vectors than the problem has free degrees of freedom (fixed DOFs carry no mass,
 /// so (K − σM)⁻¹M maps everything into the free ones), less the modes of earlier batches it is
 /// kept M-orthogonal to; one that large or larger cannot be extended, and Krylov–Schur restarts
-/// forever on a space it cannot grow. Every space stays at least one vector below that bound. The same rules run at check time (input errors naming the parameter at fault)
-/// and before every batch, so neither can ask for a space the model cannot hold.
+/// forever on a space it cannot grow. Every space stays at least one vector below that bound. The
+/// same rules run at check time (input errors naming the parameter at fault) and before every
+/// batch, so neither can ask for a space the model cannot hold.
 ///
 /// The batch sizes of a frequency band come from the band and the model: a first batch large
 /// enough to show how fast the mode count grows with frequency, then one batch for the rest of
@@ -54,8 +55,9 @@ int automatic_first_batch(long long free_dofs);
 /// of the modes found (clamped to [0.5, 3]: beams to 3-D solids), plus a margin.
 int next_band_batch(const std::vector<double>& frequencies, double band_high, int minimum);
 
-/// Batches a frequency band may take before the run stops with an error (each batch at least
-/// doubles the modes found when the estimate is poor, so this is never reached in practice).
+/// Batches a frequency band may take before the run stops with an error naming the band: a
+/// bound on the search loop (the free DOFs bound it too, as every batch adds modes); the
+/// estimate normally needs two.
 constexpr int kMaximumBandBatches = 40;
 
 }  // namespace railfe
