@@ -38,11 +38,12 @@ ParameterSpec classification_parameters() {
 
 ParameterSpec modal_parameters() {
   ParameterSpec spec("Natural frequencies and mode shapes of hex8 solids (K phi = omega^2 M phi).");
-  spec.integer("Modes", 10,
+  spec.integer("Modes", 0,
                "Number of lowest modes (above the shift) to compute; with a Frequency band, the "
-               "first guess of how many lie in it (a guess slightly above the true count is "
-               "fastest; too low, and further batches continue the search).",
-               Range::at_least(1));
+               "first batch of the search (later batches are sized from the growth of the mode "
+               "count with frequency). 0 = automatic: 10 without a band; with one, up to 32, "
+               "then one batch estimated for the rest of the band.",
+               Range::at_least(0));
   spec.real_array("Frequency band", {},
                   "{low, high}: compute every mode in this band instead of a fixed number.", "Hz",
                   2, Range::non_negative());
@@ -62,11 +63,14 @@ ParameterSpec modal_parameters() {
                {"cg", "conjugate gradients with MueLu smoothed aggregation, to 1e-12"},
                {"klu2", "sparse LU (Amesos2 KLU2) on rank 0: slow on 3-D solids"}},
               "How (K - sigma M) x = b is solved at every Krylov step.");
-  spec.integer("Block size", 2,
-               "Vectors per Krylov block; 2 or more finds both members of a doublet together.",
-               Range::at_least(1));
+  spec.integer("Block size", 0,
+               "Vectors per Krylov block; 2 or more finds both members of a doublet together. "
+               "0 = automatic from each batch's modes: 2 below 32, 4 below 96, 8 from 96 "
+               "(narrower where the model has too few free DOFs).",
+               Range::at_least(0));
   spec.integer("Krylov blocks", 0,
-               "Blocks in the Krylov space (0 = enough for about three times the modes wanted).",
+               "Blocks in the Krylov space (0 = enough for about three times the modes wanted, "
+               "at most the model's free DOFs). The space may not exceed the free DOFs.",
                Range::at_least(0));
   spec.integer("Maximum restarts", 100, "Krylov-Schur restarts before giving up.",
                Range::at_least(0));

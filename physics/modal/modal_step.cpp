@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <sstream>
 
@@ -19,6 +20,7 @@
 #include "framework/output/field_gather.hpp"
 #include "physics/common/solid_assembly.hpp"
 #include "physics/common/solid_conditions.hpp"
+#include "physics/modal/krylov_plan.hpp"
 #include "physics/modal/mode_normalization.hpp"
 #include "physics/modal/shift_invert.hpp"
 #include "physics/modal/sturm_count.hpp"
@@ -111,6 +113,29 @@ void append_modes(ShiftInvertResult& result, const ShiftInvertResult& next) {
   result.converged = next.converged;
 }
 
+// Anasazi may return more converged pairs than asked for, and how many depends on the ranks:
+// keep the \p n nearest the shift (ascending, as the result is), so runs agree.
+void keep_nearest(ShiftInvertResult& result, int n, double shift) {
+  const int n_found = static_cast<int>(result.eigenvalues.size());
+  if (n_found <= n)
+    return;
+  std::vector<int> order(n_found);
+  for (int i = 0; i < n_found; ++i)
+    order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return std::abs(result.eigenvalues[a] - shift) < std::abs(result.eigenvalues[b] - shift);
+  });
+  order.resize(n);
+  std::sort(order.begin(), order.end());
+  std::vector<double> eigenvalues;
+  const std::vector<std::size_t> columns(order.begin(), order.end());
+  for (int column : order)
+    eigenvalues.push_back(result.eigenvalues[column]);
+  result.eigenvalues = eigenvalues;
+  result.vectors = result.vectors->subCopy(
+      Teuchos::ArrayView<const std::size_t>(columns.data(), columns.size()));
+}
+
 // Compares the number of eigenvalues below a point just above \p highest (between it and the
 // next returned eigenvalue) with the number returned there; returns the number missed.
 int sturm_check(const TpetraMatrix& K, const TpetraMatrix& M,
@@ -138,6 +163,15 @@ int sturm_check(const TpetraMatrix& K, const TpetraMatrix& M,
 }  // namespace
 
 ModalStep::ModalStep(const Teuchos::ParameterList& parameters) : parameters_(&parameters) {}
+
+int ModalStep::first_batch(long long free_dofs) const {
+  const int modes = parameters_->get<int>("Modes");
+  if (modes > 0)
+    return modes;
+  return parameters_->get<Teuchos::Array<double>>("Frequency band").empty()
+             ? 10
+             : automatic_first_batch(free_dofs);
+}
 
 void ModalStep::check(const CheckContext& context) {
   const Mesh& mesh = context.model.mesh();
@@ -170,6 +204,28 @@ void ModalStep::check(const CheckContext& context) {
   if (!band.empty() && !(band[0] < band[1])) {
     throw_input_error(deck, path + "/Frequency band", "low end is not below the high end",
                       "{low, high} with low < high (Hz)");
+  }
+
+  // Fixed DOFs carry no mass and no eigenvalue: every size limit counts the free ones.
+  std::vector<char> fixed(3 * static_cast<std::size_t>(mesh.n_nodes()), 0);
+  for (const auto& support : supports_)
+    for (GlobalIndex node : mesh.node_set(support.node_set, deck, path).nodes)
+      for (int c : support.components)
+        fixed[3 * static_cast<std::size_t>(node) + c] = 1;
+  const long long n_fixed = std::count(fixed.begin(), fixed.end(), 1);
+  free_dofs_ = static_cast<long long>(fixed.size()) - n_fixed;
+  if (free_dofs_ == 0) {
+    throw_input_error(deck, path + "/Supports", "fix every DOF of the model: nothing can vibrate",
+                      "supports that leave some DOFs free");
+  }
+  const KrylovPlan plan =
+      plan_krylov_space(first_batch(free_dofs_), parameters_->get<int>("Block size"),
+                        parameters_->get<int>("Krylov blocks"), free_dofs_);
+  if (!plan.problem.empty()) {
+    throw_input_error(deck, path + "/" + plan.parameter,
+                      plan.problem + " (" + std::to_string(fixed.size()) + " DOFs, " +
+                          std::to_string(n_fixed) + " fixed)",
+                      plan.allowed);
   }
 
   const auto& classification = parameters_->sublist("Classification");
@@ -256,39 +312,64 @@ void ModalStep::run(StepContext& context) {
   const ShiftInvertEigensolver& eigensolver = *solver;
   factor_progress.finish();
 
+  const long long free_dofs = dofs.n_global_dofs() - constraints.n_prescribed();
   ShiftInvertSettings settings;
-  settings.n_modes = p.get<int>("Modes");
+  settings.n_modes = first_batch(free_dofs);
   settings.block_size = p.get<int>("Block size");
   settings.krylov_blocks = p.get<int>("Krylov blocks");
   settings.maximum_restarts = p.get<int>("Maximum restarts");
   settings.tolerance = p.get<double>("Tolerance");
+  settings.free_dofs = free_dofs;
   const auto& band = p.get<Teuchos::Array<double>>("Frequency band");
-  const long long free_dofs = dofs.n_global_dofs() - constraints.n_prescribed();
   ShiftInvertResult result;
+  int batches = 1;
+  std::string block_sizes;
   {
     Progress progress =
         context.progress("Krylov-Schur, " + std::to_string(settings.n_modes) + " modes", 1);
     result = eigensolver.solve(settings, &progress);
+    if (band.empty())
+      keep_nearest(result, settings.n_modes, shift);
     progress.finish();
+    block_sizes = std::to_string(result.block_size);
   }
   // A band holds an unknown number of modes: continue in batches, each searched M-orthogonal
-  // to the modes already found, until one lies above the band. Each batch is as large as all
-  // found so far (at least Modes): small batches deep in the spectrum converge slowly.
+  // to the modes already found, until they cover the band. The modes nearest the shift come
+  // first, so the band is covered once the farthest found lies beyond both of its ends (or
+  // beyond the upper end with the shift below the band). The next batch is the rest of the band
+  // as extrapolated from the modes found (krylov_plan.hpp).
+  const auto band_covered = [&](const std::vector<double>& eigenvalues) {
+    double reach = 0;
+    for (double lambda : eigenvalues)
+      reach = std::max(reach, std::abs(lambda - shift));
+    return shift + reach > shift_eigenvalue(band[1]) &&
+           (shift - reach < shift_eigenvalue(band[0]) || shift <= shift_eigenvalue(band[0]));
+  };
   while (!band.empty() && result.converged && !result.eigenvalues.empty() &&
-         frequency_of(result.eigenvalues.back()) <= band[1]) {
+         !band_covered(result.eigenvalues)) {
     const long long n_found = static_cast<long long>(result.eigenvalues.size());
-    settings.n_modes = std::max(p.get<int>("Modes"), static_cast<int>(n_found));
-    if (n_found + settings.n_modes >= free_dofs / 2) {
-      throw RunError("the frequency band up to " + CsvWriter::format(band[1]) +
-                     " Hz holds more modes than the model can resolve (" + std::to_string(n_found) +
-                     " found below " + CsvWriter::format(frequency_of(result.eigenvalues.back())) +
-                     " Hz)");
+    std::vector<double> frequencies;
+    for (double lambda : result.eigenvalues)
+      frequencies.push_back(std::max(0.0, frequency_of(lambda)));
+    const int block = std::max(1, settings.block_size);
+    settings.n_modes = std::min(next_band_batch(frequencies, band[1], std::max(8, block)),
+                                largest_batch(settings.block_size, free_dofs - n_found));
+    if (settings.n_modes < 1 || batches >= kMaximumBandBatches) {
+      throw RunError("Frequency band: the band up to " + CsvWriter::format(band[1]) +
+                     " Hz holds more modes " + "than the model can resolve in " +
+                     std::to_string(kMaximumBandBatches) + " batches with its " +
+                     std::to_string(free_dofs) + " free DOFs (" + std::to_string(n_found) +
+                     " found up to " + CsvWriter::format(frequency_of(result.eigenvalues.back())) +
+                     " Hz); lower the upper end of the Frequency band or refine the mesh");
     }
     Progress progress = context.progress("Krylov-Schur, modes " + std::to_string(n_found + 1) +
                                              " to " + std::to_string(n_found + settings.n_modes),
                                          1);
-    append_modes(result, eigensolver.solve(settings, &progress, result.vectors));
+    ShiftInvertResult next = eigensolver.solve(settings, &progress, result.vectors);
+    block_sizes += ", " + std::to_string(next.block_size);
+    append_modes(result, next);
     progress.finish();
+    ++batches;
   }
 
   if (!result.vectors.is_null())
@@ -346,8 +427,20 @@ void ModalStep::run(StepContext& context) {
                     std::to_string(result.n_requested) + " modes");
   }
 
+  if (!band.empty() && records.empty()) {
+    // Not an error (a band may be empty by design), but an empty CSV must not pass unnoticed.
+    const std::string warning =
+        "no modes in [" + CsvWriter::format(band[0]) + ", " + CsvWriter::format(band[1]) +
+        "] Hz (" + std::to_string(result.eigenvalues.size()) +
+        " computed, all outside the band); " + context.step_name + "_modes.csv is empty";
+    summary.add(section, "warning", warning);
+    if (comm.is_root())
+      std::fprintf(stderr, "railfe: warning: step '%s': %s\n", context.step_name.c_str(),
+                   warning.c_str());
+  }
   summary.add(section, "degrees of freedom", static_cast<double>(dofs.n_global_dofs()));
   summary.add(section, "fixed DOFs", static_cast<double>(constraints.n_prescribed()));
+  summary.add(section, "free DOFs", static_cast<double>(free_dofs));
   summary.add(section, "mass", p.get<std::string>("Mass"));
   summary.add(section, "eigensolver", "Anasazi block Krylov-Schur, shift-invert");
   summary.add(section, "inner solver", p.get<std::string>("Inner solver"));
@@ -355,6 +448,8 @@ void ModalStep::run(StepContext& context) {
   summary.add(section, "modes requested", result.n_requested);
   summary.add(section, "modes converged", static_cast<double>(result.eigenvalues.size()));
   summary.add(section, "modes reported", static_cast<double>(records.size()));
+  summary.add(section, "eigensolver batches", batches);
+  summary.add(section, "block size", block_sizes);
   summary.add(section, "Krylov space", result.krylov_dimension);
   summary.add(section, "iterations", result.restarts);
   summary.add(section, "operator applications", static_cast<double>(result.operator_applies));
@@ -379,10 +474,19 @@ void ModalStep::run(StepContext& context) {
   summary.add(section, "time: output", clock.seconds(), "s");
 
   if (n_failed > 0 && p.get<std::string>("On failed check") == "error") {
+    // Name the parameter most likely at fault: unconverged modes want a longer or larger search,
+    // failed checks of converged modes a tighter tolerance or a shift nearer to them.
+    const std::string advice =
+        !result.converged
+            ? "the eigensolver stopped after Maximum restarts = " +
+                  std::to_string(settings.maximum_restarts) +
+                  ": raise Maximum restarts or Krylov blocks (0 = automatic), or move the Shift "
+                  "nearer the wanted modes"
+            : "lower Tolerance, or move the Shift nearer the failing modes";
     throw RunError(std::to_string(n_failed) + " of " + std::to_string(records.size()) +
                    " modes failed their checks (see the status column of " + context.step_name +
-                   "_modes.csv); raise Krylov blocks, change the shift, or set On failed check = "
-                   "warn to keep the results");
+                   "_modes.csv); " + advice +
+                   ", or set On failed check = warn to keep the results");
   }
 }
 

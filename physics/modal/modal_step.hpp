@@ -48,6 +48,8 @@ class ModalStep : public AnalysisStep {
   void run(StepContext& context) override;
 
  private:
+  // Modes of the first eigensolver batch: Modes, or its automatic value.
+  int first_batch(long long free_dofs) const;
   void classify(const MeshPartition& partition, const TpetraMultiVector& modes,
                 std::vector<ModeRecord>& records) const;
   void write_results(StepContext& context, const std::vector<ModeRecord>& records,
@@ -63,6 +65,7 @@ class ModalStep : public AnalysisStep {
   AxisymmetricFrame frame_;
   ClassifierSettings classifier_;
   bool classify_ = false;
+  long long free_dofs_ = 0;  // DOFs not fixed by a support
 };
 
 }  // namespace railfe

@@ -10,15 +10,34 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <stdexcept>
+#include <string>
 
 #include "framework/base/error.hpp"
 #include "framework/base/resources.hpp"
+#include "physics/modal/krylov_plan.hpp"
 
 namespace railfe {
 
 namespace {
 
 using Eigenproblem = Anasazi::BasicEigenproblem<double, TpetraMultiVector, TpetraOperator>;
+
+// A failed inner solve, carried through Anasazi unchanged so that the message can name the
+// modal parameters that cause it rather than the linear solver's own advice.
+class InnerSolveError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The linear solver's account of its failure without its advice, which names statics
+// parameters (Preconditioner, Method) that a modal step does not have.
+std::string without_advice(const std::string& message) {
+  std::size_t end = message.size();
+  for (const char* advice : {". The matrix or the preconditioner", ". Raise 'Maximum iterations'"})
+    end = std::min(end, message.find(advice));
+  return message.substr(0, end);
+}
 
 // Y = (K − σM)⁻¹ M X, through the inner solver's factorization.
 class ShiftInvertOperator : public TpetraOperator {
@@ -36,7 +55,11 @@ class ShiftInvertOperator : public TpetraOperator {
     TpetraMultiVector mass_times_x(M_->getRangeMap(), X.getNumVectors());
     M_->apply(X, mass_times_x);
     TpetraMultiVector solution(M_->getDomainMap(), X.getNumVectors());
-    inner_.solve_block(mass_times_x, solution);
+    try {
+      inner_.solve_block(mass_times_x, solution);
+    } catch (const RunError& error) {
+      throw InnerSolveError(error.what());
+    }
     Y.update(alpha, solution, beta);
     applies_ += static_cast<long long>(X.getNumVectors());
     // Krylov-Schur typically needs about one Krylov space of applications; the share of it is
@@ -73,6 +96,15 @@ void fill_reproducible_random(TpetraMultiVector& block, unsigned seed) {
   }
 }
 
+RunError inner_solve_failure(const InnerSolveError& error) {
+  return RunError(
+      "the inner solve of (K - sigma M) x = M v failed: " + without_advice(error.what()) +
+      ". K - sigma M is indefinite when the Shift lies above the lowest natural "
+      "frequency, and nearly singular when it lies close to one: choose a Shift "
+      "below the lowest mode (negative for a free body, e.g. -1 Hz), or Inner solver "
+      "= cholmod");
+}
+
 }  // namespace
 
 ShiftInvertEigensolver::ShiftInvertEigensolver(Teuchos::RCP<const TpetraMatrix> K,
@@ -99,28 +131,16 @@ ShiftInvertResult ShiftInvertEigensolver::solve(const ShiftInvertSettings& setti
     throw RunError("the eigensolver was asked for " + std::to_string(settings.n_modes) + " modes");
   Stopwatch clock;
 
-  const int block_size = settings.block_size;
-  int blocks = settings.krylov_blocks;
-  if (blocks <= 0) {
-    // Three times the wanted modes: with two, Krylov-Schur restarts so often that it needs
-    // twice the operator applications (measured on the wheel, 140 modes: 832 against 432).
-    const int wanted = std::max(3 * settings.n_modes, settings.n_modes + 20);
-    blocks = (wanted + block_size - 1) / block_size;
-  }
-  // A Krylov space cannot exceed the problem; Anasazi needs nev < blocks × block size.
-  const long long largest_blocks = std::max(2LL, (n_global - 1) / block_size);
-  blocks = static_cast<int>(std::min<long long>(blocks, largest_blocks));
-  result.krylov_dimension = blocks * block_size;
-  // Krylov-Schur keeps the wanted Ritz vectors plus at least one block to extend them.
-  const int wanted_blocks = (settings.n_modes + block_size - 1) / block_size;
-  if (blocks <= wanted_blocks) {
-    throw RunError("asked for " + std::to_string(settings.n_modes) + " modes with blocks of " +
-                   std::to_string(block_size) + " vectors, which needs more than " +
-                   std::to_string(wanted_blocks) + " Krylov blocks; the space has " +
-                   std::to_string(blocks) +
-                   " (raise Krylov blocks, or 0 for automatic; the model has " +
-                   std::to_string(n_global) + " DOFs)");
-  }
+  const long long free_dofs = settings.free_dofs > 0 ? settings.free_dofs : n_global;
+  const long long deflated = found.is_null() ? 0 : static_cast<long long>(found->getNumVectors());
+  const KrylovPlan plan = plan_krylov_space(settings.n_modes, settings.block_size,
+                                            settings.krylov_blocks, free_dofs, deflated);
+  if (!plan.problem.empty())
+    throw RunError(plan.parameter + ": " + plan.problem + " (allowed: " + plan.allowed + ")");
+  const int block_size = plan.block_size;
+  const int blocks = plan.blocks;
+  result.krylov_dimension = plan.dimension();
+  result.block_size = block_size;
 
   auto op = Teuchos::rcp(new ShiftInvertOperator(M, inner_, progress,
                                                  static_cast<long long>(result.krylov_dimension)));
@@ -128,7 +148,11 @@ ShiftInvertResult ShiftInvertEigensolver::solve(const ShiftInvertSettings& setti
   TpetraMultiVector random(K->getDomainMap(), block_size);
   fill_reproducible_random(random, settings.seed);
   auto start = Teuchos::rcp(new TpetraMultiVector(K->getDomainMap(), block_size));
-  op->apply(random, *start, Teuchos::NO_TRANS, 1.0, 0.0);
+  try {
+    op->apply(random, *start, Teuchos::NO_TRANS, 1.0, 0.0);
+  } catch (const InnerSolveError& error) {
+    throw inner_solve_failure(error);
+  }
 
   auto problem = Teuchos::rcp(new Eigenproblem(op, M, start));
   problem->setHermitian(true);
@@ -152,6 +176,8 @@ ShiftInvertResult ShiftInvertEigensolver::solve(const ShiftInvertSettings& setti
   Anasazi::ReturnType status = Anasazi::Unconverged;
   try {
     status = manager.solve();
+  } catch (const InnerSolveError& error) {
+    throw inner_solve_failure(error);
   } catch (const std::exception& error) {
     throw RunError("the Krylov-Schur eigensolver failed: " + essential_line(error.what()));
   }

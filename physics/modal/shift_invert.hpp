@@ -17,8 +17,9 @@ namespace railfe {
 /// How the eigensolver runs.
 struct ShiftInvertSettings {
   int n_modes = 10;            ///< eigenpairs wanted (those nearest the shift)
-  int block_size = 2;          ///< vectors per Krylov block (≥ 2 finds doublets together)
+  int block_size = 0;          ///< vectors per Krylov block; 0 = automatic (krylov_plan.hpp)
   int krylov_blocks = 0;       ///< blocks in the Krylov space; 0 = automatic (about 3 × n_modes)
+  long long free_dofs = 0;     ///< DOFs not fixed (bounds the space); 0 = every row of K
   int maximum_restarts = 100;  ///< restarts before giving up
   double tolerance = 1e-10;    ///< Ritz residual of the inverted problem, relative to its value
   unsigned seed = 12345;       ///< seed of the random start block (reproducible runs)
@@ -30,6 +31,7 @@ struct ShiftInvertResult {
   Teuchos::RCP<TpetraMultiVector> vectors;  ///< one column per eigenvalue, φᵀMφ = 1
   int n_requested = 0;                      ///< n_modes asked for
   int krylov_dimension = 0;                 ///< block_size × krylov_blocks used
+  int block_size = 0;                       ///< vectors per block used
   int restarts = 0;                         ///< restarts Anasazi needed
   long long operator_applies = 0;           ///< columns passed through (K − σM)⁻¹M
   double factor_seconds = 0;                ///< time to factorize K − σM
