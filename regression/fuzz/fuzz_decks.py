@@ -12,9 +12,11 @@ The unmutated (reduced) base decks run first and must exit 0 with clean results.
 """
 
 import argparse
+import collections
 import concurrent.futures
 import os
 import random
+import re
 import shutil
 import sys
 import time
@@ -126,12 +128,18 @@ def main():
                 print(describe(case, arguments), flush=True)
 
     elapsed = time.monotonic() - started
+    # The same problem from many decks (numbers and deck names blanked) counted once, so a new
+    # kind of violation stands out.
+    kinds = collections.Counter(
+        re.sub(r"'[^']*'|/\S+|(?<![A-Za-z_])[-+]?\d[\d.eE+-]*", "#", problem) for case in violations
+        for problem in case.problems)
     slowest = sorted(cases, key=lambda c: -c.seconds)[:3]
     summary = ["fuzz: seed %d, %d decks (%d base) in %.0f s; exit statuses %s"
                % (arguments.seed, len(cases), sum(1 for c in cases if not c.mutations), elapsed,
                   ", ".join("%s: %d" % item for item in sorted(statuses.items()))),
                "fuzz: slowest %s" % ", ".join("%s %.1f s" % (c.label, c.seconds)
                                               for c in slowest),
+               ] + ["fuzz: %5d x %s" % (n, kind) for kind, n in kinds.most_common()] + [
                "fuzz: %d decks broke the contract%s" % (
                    len(violations), " (kept in %s/decks)" % arguments.work if violations else "")]
     with open(os.path.join(arguments.work, "report.txt"), "w", encoding="utf-8") as report:
