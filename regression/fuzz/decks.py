@@ -153,3 +153,30 @@ def write_deck(root, path, header_lines):
     comment = "\n".join("  " + line.replace("--", "- -") for line in header_lines)
     with open(path, "w", encoding="utf-8") as deck:
         deck.write("<!--\n" + comment + "\n-->\n" + body + "\n")
+
+
+NUMERIC_TYPES = ("double", "int", "Array(double)", "Array(int)")
+
+
+def _refusable(entry):
+    """A number railfe must refuse: NaN, infinite (1e309 included) or hexadecimal."""
+    text = entry.strip().lower().lstrip("+-")
+    if text.startswith("0x"):
+        return True
+    try:
+        return not math.isfinite(float(text))
+    except ValueError:
+        return False
+
+
+def refusable_numbers(root):
+    """(path, value) of every numeric parameter of the deck holding a NaN, an infinity or a
+    hexadecimal number, alone or inside an array."""
+    found = []
+    for parameter in parameters(root):
+        if parameter.type not in NUMERIC_TYPES:
+            continue
+        entries = parameter.value.strip().strip("{}").split(",")
+        if any(_refusable(entry) for entry in entries):
+            found.append((parameter.path, parameter.value[:60]))
+    return found

@@ -83,6 +83,9 @@ def run_case(case, arguments):
     top_level |= {child.get("name") for child in case.base.root}
     case.problems = checks.check_outcome(case.status, case.output_text, deck_path, output,
                                          top_level, arguments.timeout)
+    if case.status == 0:
+        case.problems += ["exit 0 although %s = %s (NaN, inf or hexadecimal: must be refused)"
+                          % item for item in decks.refusable_numbers(case.root)]
     if not case.mutations and case.status != 0:
         case.problems.append("the unmutated base deck must exit 0 (exit %s)" % case.status)
     if not case.problems:
