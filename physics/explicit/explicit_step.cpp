@@ -217,6 +217,14 @@ void ExplicitStep::run(StepContext& context) {
     if (!(solver.stable_step() > 0) || !std::isfinite(solver.stable_step()))
       throw RunError(path + ": " +
                      blow_up_message(solver, nullptr, dt, initial_stable_step, settings));
+    // A step that has shrunk a thousandfold means elements are being crushed (a prescribed
+    // motion or load far beyond the model): the run would crawl on without end.
+    if (!fixed_step && solver.stable_step() < 1e-3 * initial_stable_step)
+      throw RunError(path + ": the stable step fell to " + seconds_text(solver.stable_step()) +
+                     ", below 1/1000 of its start value " + seconds_text(initial_stable_step) +
+                     ", at t = " + seconds_text(solver.time()) +
+                     ": elements are being crushed; check the prescribed motions and loads for "
+                     "values far beyond the model");
     if (!recorder.record(false))
       throw RunError(path + ": " +
                      blow_up_message(solver, &recorder, dt, initial_stable_step, settings));
