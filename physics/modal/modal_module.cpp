@@ -32,7 +32,9 @@ ParameterSpec classification_parameters() {
   spec.real("Noise fraction", 0.05,
             "Values below this share of the largest on the nodal-circle line count as zero.", "",
             Range::closed_open(0.0, 1.0));
-
+  spec.only_when("Axisymmetric", {"true"},
+                 {"Axis origin", "Axis direction", "Rim fraction", "Web radii", "Dominance",
+                  "Family dominance", "Noise fraction"});
   return spec;
 }
 

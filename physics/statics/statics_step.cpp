@@ -89,9 +89,10 @@ void StaticsStep::run(StepContext& context) {
   // An overflowing load (an extreme Density times Gravity, or a huge Total force) would end in a
   // solver message about restraints; say what it is instead.
   if (!std::isfinite(forces->norm1()))
-    throw RunError(context.path + ": the assembled load is not finite (NaN or inf): check "
-                                  "Gravity with the materials' Density, and every Total force, "
-                                  "Traction and Pressure for extreme values");
+    throw RunError(context.path +
+                   ": the assembled load is not finite (NaN or inf): check "
+                   "Gravity with the materials' Density, and every Total force, "
+                   "Traction and Pressure for extreme values");
   TpetraVector original_forces(*forces, Teuchos::Copy);
   LinearConstraints constraints(dofs, context.source());
   add_solid_constraints(conditions_, tie_pairs_, dofs, constraints);
