@@ -133,9 +133,6 @@ void ContactPatchStep::run(StepContext& context) {
   const double G = E / (2 * (1 + nu));
   const double load = p.get<double>("Normal load");
   const HertzContact h = deck_hertz(p);
-  if (h.a / h.b < 0.1 || h.a / h.b > 10)
-    throw RunError(context.path + ": the Hertz ellipse's a / b = " + std::to_string(h.a / h.b) +
-                   " lies outside Kalker's table (0.1 to 10)");
   const KalkerCoefficients c = KalkerTable::shipped().at(h.a, h.b, nu);
   FrictionLaw friction;
   friction.static_coefficient = p.get<double>("Static friction");

@@ -9,20 +9,10 @@
 #include "framework/mesh/hex8_topology.hpp"
 #include "physics/elements/hex8.hpp"
 
+#include "physics/tests/distorted_hex8.hpp"
+
 namespace railfe {
 namespace {
-
-// A distorted element (all corner Jacobians positive).
-void distorted(double x[8][3]) {
-  const double perturbation[8][3] = {
-      {0.1, -0.05, 0.02},   {-0.08, 0.03, 0.1}, {0.05, 0.07, -0.04},  {0.02, -0.06, 0.05},
-      {-0.04, 0.05, -0.03}, {0.06, 0.02, 0.04}, {-0.02, -0.08, 0.06}, {0.03, 0.04, -0.07}};
-  for (int a = 0; a < 8; ++a) {
-    for (int d = 0; d < 3; ++d) {
-      x[a][d] = (kHex8NodeReference[a][d] + 1) / 2 * (d == 0 ? 2.0 : 1.0) + perturbation[a][d];
-    }
-  }
-}
 
 using Matrix24 = Eigen::Matrix<double, 24, 24, Eigen::RowMajor>;
 
