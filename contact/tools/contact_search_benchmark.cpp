@@ -1,0 +1,2 @@
+// railfe-contact-search-benchmark: placeholder until the timing driver lands.
+int main() { return 0; }
