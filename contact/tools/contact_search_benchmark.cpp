@@ -1,2 +1,4 @@
 // railfe-contact-search-benchmark: placeholder until the timing driver lands.
-int main() { return 0; }
+int main() {
+  return 0;
+}

@@ -185,7 +185,9 @@ void DiscreteParts::predict(double dt, NodalArrays& nodes) {
       const Eigen::Vector3d u = body.displacement + r - body.offsets[i];
       const Eigen::Vector3d v = body.velocity + body.angular_velocity.cross(r);
       for (int d = 0; d < 3; ++d) {
-        nodes.du[3 * node + d] = u[d] - nodes.u[3 * node + d];
+        // The predictor has already advanced u by du: the step is measured from u_n.
+        const double previous = nodes.u[3 * node + d] - nodes.du[3 * node + d];
+        nodes.du[3 * node + d] = u[d] - previous;
         nodes.u[3 * node + d] = u[d];
         nodes.v[3 * node + d] = v[d];
       }

@@ -8,6 +8,7 @@
 #include "framework/output/exodus_writer.hpp"
 #include "framework/output/field_gather.hpp"
 #include "framework/output/output_directory.hpp"
+#include "physics/explicit/contact_output.hpp"
 #include "physics/explicit/explicit_solver.hpp"
 #include "physics/explicit/nodal_conditions.hpp"
 
@@ -102,10 +103,11 @@ ExplicitRecorder::ExplicitRecorder(const ExplicitSettings& settings, const Expli
   energy_ = std::make_unique<CsvWriter>(
       output.staging_path(step_name + "_energy.csv"),
       std::vector<std::string>{"time_s", "step", "time_step_s", "kinetic_J", "internal_J",
-                               "hourglass_J", "damping_J", "external_work_J", "energy_error",
-                               "hourglass_ratio"},
+                               "hourglass_J", "damping_J", "contact_J", "friction_J",
+                               "external_work_J", "energy_error", "hourglass_ratio"},
       root_);
   measurements_path_ = output.staging_path(step_name + "_measurements.csv");
+  contact_ = std::make_unique<ContactRecorder>(settings, solver, output, step_name, root_);
   wave_speeds_path_ = output.staging_path(step_name + "_wave_speeds.csv");
   if (write_exodus) {
     exodus_ = std::make_unique<ExodusWriter>(
@@ -128,6 +130,7 @@ const EnergyBalance& ExplicitRecorder::last_balance() const {
 bool ExplicitRecorder::record(bool force_rows) {
   const Communicator& comm = partition_.comm();
   const long long step = solver_.n_steps();
+  contact_->record(force_rows);
   if (!settings_.histories.empty()) {
     std::vector<double> sums;
     for (std::size_t h = 0; h < settings_.histories.size(); ++h) {
@@ -192,11 +195,16 @@ bool ExplicitRecorder::record(bool force_rows) {
     // not stop a correct run.
     energy_put_in_ =
         std::max(energy_put_in_, std::abs(solver_.initial_energy()) + std::abs(b.external_work));
-    const double stored = b.kinetic + b.internal + b.hourglass;
+    const double stored = b.kinetic + b.internal + b.hourglass + b.contact;
     growth_ = stored / std::max(energy_put_in_, 1e-300);
-    if (!std::isfinite(b.kinetic + b.internal + b.hourglass + b.damping + b.external_work) ||
+    // A step above the stable limit (Allow unstable step) has no bounded oscillation to excuse
+    // the error: there the error alone fails. Penalty contact beyond its critical step throws
+    // nodes off with energy it created instead of growing exponentially.
+    beyond_stable_step_ = solver_.last_step() > solver_.stable_step() * (1 + 1e-9);
+    if (!std::isfinite(b.kinetic + b.internal + b.hourglass + b.damping + b.contact + b.friction +
+                       b.external_work) ||
         (judged && !(std::abs(b.error) <= settings_.energy_error_limit) &&
-         !(growth_ <= settings_.energy_growth_limit)))
+         (beyond_stable_step_ || !(growth_ <= settings_.energy_growth_limit))))
       return false;
     const std::vector<double> row = {solver_.time(),
                                      static_cast<double>(step),
@@ -205,6 +213,8 @@ bool ExplicitRecorder::record(bool force_rows) {
                                      b.internal,
                                      b.hourglass,
                                      b.damping,
+                                     b.contact,
+                                     b.friction,
                                      b.external_work,
                                      b.error,
                                      b.hourglass / std::max(b.kinetic + b.internal, 1e-300)};
@@ -324,6 +334,8 @@ std::vector<double> ExplicitRecorder::state() const {
                   {e.previous_time, e.previous_value, e.arrival_time, e.peak_time, e.peak_value,
                    e.first_crossing, e.last_crossing, e.crossings, e.started ? 1.0 : 0.0});
   }
+  const std::vector<double> contact = contact_->state();
+  values.insert(values.end(), contact.begin(), contact.end());
   return values;
 }
 
@@ -350,6 +362,8 @@ void ExplicitRecorder::restore(const std::vector<double>& values) {
       *field = values.at(k++);
     e.started = values.at(k++) != 0;
   }
+  contact_->restore(
+      std::vector<double>(values.begin() + static_cast<std::ptrdiff_t>(k), values.end()));
   for (const auto& row : energy_rows_)
     energy_->write_row(row);
   for (const auto& row : history_rows_)

@@ -15,6 +15,7 @@
 
 namespace railfe {
 
+class ContactRecorder;
 class CsvWriter;
 class ExodusWriter;
 class ExplicitSolver;
@@ -53,16 +54,21 @@ class ExplicitRecorder {
   /// Samples histories at the solver's current state and writes the rows that are due
   /// (collective). Returns false, writing nothing, when a value is not finite or the run blows
   /// up: the energy error exceeds its limit and the stored energy has grown past the growth
-  /// limit times the energy put in (the run must stop).
+  /// limit times the energy put in, or the error exceeds its limit at a step above the stable
+  /// limit (the run must stop).
   bool record(bool force_rows);
   /// The energy balance at the last energy row.
   const EnergyBalance& last_balance() const;
   /// Stored energy over the energy put in (initial energy and work of the loads), last row.
   double energy_growth() const { return growth_; }
+  /// Whether the last judged step was above the stable limit (then the error alone fails).
+  bool beyond_stable_step() const { return beyond_stable_step_; }
   /// Writes an Exodus snapshot if one is due at the current time (collective); \p last forces it.
   void snapshot(bool last);
   /// Writes the measurements and wave speeds and closes every file (collective).
   void finish();
+  /// The contact outputs.
+  const ContactRecorder& contact() const { return *contact_; }
   /// What a checkpoint must hold to resume the files (rank 0's rows and every rank's events).
   std::vector<double> state() const;
   /// Restores state() and rewrites the rows so far (collective).
@@ -82,12 +88,14 @@ class ExplicitRecorder {
   std::vector<HistoryEvents> events_;
   std::unique_ptr<CsvWriter> energy_, histories_;
   std::unique_ptr<ExodusWriter> exodus_;
+  std::unique_ptr<ContactRecorder> contact_;
   std::string measurements_path_, wave_speeds_path_;
   std::vector<std::vector<double>> energy_rows_, history_rows_;
   std::unique_ptr<EnergyBalance> balance_;
   double next_snapshot_ = 0;
   double energy_put_in_ = 0;  // initial energy + largest |work of the loads| so far
-  double growth_ = 0;         // stored energy / energy_put_in_ at the last energy row
+  bool beyond_stable_step_ = false;
+  double growth_ = 0;  // stored energy / energy_put_in_ at the last energy row
   long long last_energy_step_ = -1, last_history_step_ = -1;
   bool root_;
 };

@@ -191,6 +191,8 @@ ParameterSpec explicit_parameters() {
   spec.sublist("Solid", solid, "Hex8 formulation.");
   load_parameters(spec);
   spec.sublist("Discrete parts", discrete_parameters(), "Masses, rigid bodies, springs.");
+  spec.named_sublists("Contact pairs", contact_pair_parameters(),
+                      "Penalty node-to-segment contact between deformable bodies.");
   spec.sublist("Output", output_parameters(), "Energy, histories and snapshots.");
   ParameterSpec checkpoint("Checkpoint and restart.");
   checkpoint.integer("Interval", 0, "Steps between checkpoints (0 = none).", Range::at_least(0));
@@ -440,6 +442,12 @@ ExplicitSettings read_explicit_settings(const Teuchos::ParameterList& step, cons
   read_loads(step, deck, path, settings);
   read_discrete(step.sublist("Discrete parts"), deck, path + "/Discrete parts", settings);
   read_output(step.sublist("Output"), deck, path, settings);
+  settings.contact_pairs = read_contact_pairs(step, deck, path);
+  for (const ContactPairSpec& pair : settings.contact_pairs)
+    if (!pair.patch_times.empty() && pair.patch_times.back() > settings.end_time)
+      throw_input_error(deck, path + "/Contact pairs/" + pair.name + "/Patch times",
+                        "go beyond the End time (" + std::to_string(settings.end_time) + " s)",
+                        "times up to the End time");
   const auto& checkpoint = step.sublist("Checkpoint");
   settings.checkpoint_interval = checkpoint.get<int>("Interval");
   settings.restart = checkpoint.get<bool>("Restart");
@@ -453,6 +461,7 @@ ExplicitSettings read_explicit_settings(const Teuchos::ParameterList& step, cons
 
 void check_explicit_settings(const ExplicitSettings& settings, const Mesh& mesh,
                              const std::string& deck, const std::string& path) {
+  check_contact_pairs(settings.contact_pairs, mesh, deck, path);
   for (const auto& load : settings.loads) {
     if (!load.node_set.empty())
       mesh.node_set(load.node_set, deck, path + "/Nodal forces/" + load.name + "/Node set");

@@ -15,6 +15,7 @@
 
 #include "framework/deck/parameter_spec.hpp"
 #include "framework/mesh/mesh.hpp"
+#include "physics/explicit/contact_settings.hpp"
 #include "physics/explicit/solid_kernel.hpp"
 
 namespace railfe {
@@ -133,6 +134,7 @@ struct ExplicitSettings {
   std::vector<RigidBodySpec> bodies;                  ///< rigid bodies and point masses
   std::vector<SpringSpec> springs;                    ///< spring–dampers
   std::vector<BodyMoment> moments;                    ///< moments on bodies
+  std::vector<ContactPairSpec> contact_pairs;         ///< penalty contact pairs
   std::vector<HistorySpec> histories;                 ///< node-set histories
   std::vector<ElementHistorySpec> element_histories;  ///< element stress histories
   std::vector<WaveSpeedSpec> wave_speeds;             ///< measured wave speeds

@@ -8,6 +8,7 @@
 #include "framework/base/error.hpp"
 #include "physics/common/solid_assembly.hpp"
 #include "physics/elements/hex8.hpp"
+#include "physics/explicit/explicit_contact.hpp"
 #include "physics/explicit/ghost_exchange.hpp"
 #include "physics/explicit/lanczos.hpp"
 #include "physics/explicit/nodal_conditions.hpp"
@@ -87,6 +88,8 @@ ExplicitSolver::ExplicitSolver(const ExplicitSettings& settings, const DofMap& d
                       "prescribe the body (Fixed translations / rotations) instead");
   gravity_function_ =
       std::make_unique<Expression>(settings.gravity_function, deck, path + "/Gravity function");
+  contact_ =
+      std::make_unique<ExplicitContact>(settings.contact_pairs, partition, materials, deck, path);
 }
 
 ExplicitSolver::~ExplicitSolver() = default;
@@ -104,7 +107,7 @@ NodalArrays ExplicitSolver::arrays() {
   return nodes;
 }
 
-void ExplicitSolver::evaluate_forces(double time) {
+void ExplicitSolver::evaluate_forces(double time, double dt) {
   std::fill(force_.begin(), force_.end(), 0.0);
   totals_ = add_internal_forces(elements_, settings_.kernel, x_.data(), u_.data(), v_.data(),
                                 force_.data());
@@ -121,8 +124,15 @@ void ExplicitSolver::evaluate_forces(double time) {
   spring_energy_ = 0;
   NodalArrays nodes = arrays();
   damper_power_ = discrete_->add_spring_forces(nodes, spring_energy_);
-  stable_step_ =
+  // Before the bodies sum their nodes' forces, so a carried node's contact force moves its body.
+  contact_->add_forces(x_.data(), u_.data(), du_.data(), dt, residual_.data());
+  solid_stable_step_ =
       std::min(comm_.min(totals_.stable_step) * step_calibration_, discrete_->stable_step());
+  stable_step_ = std::min(solid_stable_step_, contact_->stable_step());
+}
+
+double ExplicitSolver::contact_stable_step() const {
+  return contact_->stable_step();
 }
 
 void ExplicitSolver::calibrate_stable_step() {
@@ -202,7 +212,15 @@ void ExplicitSolver::initialise(const double* start) {
   // borrowed arrays are overwritten by the first force evaluation).
   std::fill(a_.begin(), a_.end(), 0.0);
   motions_->apply(0, 0, u_.data(), du_.data(), v_.data(), a_.data());
-  evaluate_forces(0);
+  double element_step = 1e300;
+  for (double step : elements_.stable_step)
+    element_step = std::min(element_step, step);
+  const double solid_step =
+      settings_.time_step > 0
+          ? settings_.time_step
+          : settings_.safety_factor * comm_.min(element_step) * step_calibration_;
+  contact_->initialise(mass_, solid_step, x_.data(), u_.data());
+  evaluate_forces(0, 0);
   discrete_->correct(0, 0, gravity_now_, nodes, comm_);
   external_ = applied_;
   for (LocalIndex node = 0; node < n_owned_; ++node) {
@@ -244,7 +262,7 @@ void ExplicitSolver::step(double dt) {
   discrete_->predict(dt, nodes);
   ghosts_->update_ghosts(u_.data(), v_.data());
 
-  evaluate_forces(time_next);
+  evaluate_forces(time_next, dt);
   discrete_->correct(time_next, dt, gravity_now_, nodes, comm_);
 
   // Corrector: a_{n+1} from the diagonal system, v_{n+1}; work of every external force.
@@ -305,7 +323,11 @@ EnergyBalance ExplicitSolver::energy_balance() const {
   balance.hourglass = sums[2];
   balance.damping = sums[3];
   balance.external_work = sums[4] + discrete_->external_work();
-  const double total = balance.kinetic + balance.internal + balance.hourglass + balance.damping;
+  // Every rank evaluates the whole contact, so its energies are not summed.
+  balance.contact = contact_->stored_energy();
+  balance.friction = contact_->dissipated();
+  const double total = balance.kinetic + balance.internal + balance.hourglass + balance.damping +
+                       balance.contact + balance.friction;
   const double scale =
       std::max({std::abs(initial_energy_), std::abs(total), std::abs(balance.external_work)});
   balance.error = scale > 0 ? (total - initial_energy_ - balance.external_work) / scale : 0.0;
@@ -332,6 +354,9 @@ double ExplicitSolver::total_mass() const {
 }
 
 std::string ExplicitSolver::critical_location() const {
+  if (contact_->stable_step() <= stable_step_)
+    return "contact pair '" + contact_->critical_pair() +
+           "' (2 sqrt(m / k) of its penalty springs; a smaller Penalty factor raises it)";
   if (discrete_->stable_step() <= stable_step_)
     return "a spring-damper of Discrete parts";
   std::ostringstream text;
@@ -357,6 +382,10 @@ SolverState ExplicitSolver::state() const {
     state.arrays.insert(state.arrays.end(), array->begin(), array->end());
   state.arrays.insert(state.arrays.end(), previous_reaction_.begin(), previous_reaction_.end());
   state.discrete = discrete_->state();
+  // The contact's friction history rides behind the bodies', its length last.
+  const std::vector<double> contact = contact_->state();
+  state.discrete.insert(state.discrete.end(), contact.begin(), contact.end());
+  state.discrete.push_back(static_cast<double>(contact.size()));
   return state;
 }
 
@@ -382,7 +411,14 @@ void ExplicitSolver::restore(const SolverState& state) {
     it += static_cast<std::ptrdiff_t>(array->size());
   }
   std::copy_n(it, previous_reaction_.size(), previous_reaction_.begin());
-  discrete_->restore(state.discrete);
+  const auto contact_size =
+      state.discrete.empty() ? std::size_t{0} : static_cast<std::size_t>(state.discrete.back());
+  if (state.discrete.empty() || contact_size + 1 > state.discrete.size())
+    throw RunError("the checkpoint does not fit this model's contact pairs");
+  const auto contact_begin = state.discrete.end() - 1 - static_cast<std::ptrdiff_t>(contact_size);
+  discrete_->restore(std::vector<double>(state.discrete.begin(), contact_begin));
+  if (!contact_->restore(std::vector<double>(contact_begin, state.discrete.end() - 1)))
+    throw RunError("the checkpoint does not fit this model's contact pairs");
   ghosts_->update_ghosts(u_.data(), v_.data());
 }
 

@@ -21,6 +21,7 @@
 namespace railfe {
 
 class DofMap;
+class ExplicitContact;
 class GhostExchange;
 class MaterialTable;
 class TimedLoads;
@@ -31,9 +32,11 @@ struct EnergyBalance {
   double kinetic = 0;        ///< ½ vᵀ M v of nodes and bodies (J)
   double internal = 0;       ///< strain energy of solids plus spring energy (J)
   double hourglass = 0;      ///< stored (stiffness form) or dissipated (viscous form) (J)
+  double contact = 0;        ///< stored in the contact penalty springs (J)
+  double friction = 0;       ///< dissipated by contact friction and contact damping (J)
   double damping = 0;        ///< dissipated by Rayleigh damping, bulk viscosity, dampers (J)
   double external_work = 0;  ///< work of loads, gravity and supports since the start (J)
-  double error = 0;          ///< (E − E₀ − W) / max(E₀, E, |W|), E = sum of the four above
+  double error = 0;          ///< (E − E₀ − W) / max(E₀, E, |W|), E = sum of the six above
 };
 
 /// Everything that changes during a run, for checkpoints: per rank.
@@ -62,6 +65,12 @@ class ExplicitSolver {
   /// Stable step at the current state over all ranks, before the safety factor (s): each
   /// element's L/c_P (reduced by bulk viscosity) times step_calibration(), and the springs'.
   double stable_step() const { return stable_step_; }
+  /// The solids' and springs' stable step alone (s), without contact.
+  double solid_stable_step() const { return solid_stable_step_; }
+  /// The contact pairs' critical step (s), +inf without contact.
+  double contact_stable_step() const;
+  /// The contact pairs.
+  const ExplicitContact& contact() const { return *contact_; }
   /// Where the stable step is smallest, for messages ("element 12 of block 'rail' at (x, y, z)"
   /// or "spring–dampers").
   std::string critical_location() const;
@@ -97,7 +106,7 @@ class ExplicitSolver {
   void restore(const SolverState& state);
 
  private:
-  void evaluate_forces(double time);
+  void evaluate_forces(double time, double dt);
   void calibrate_stable_step();
   NodalArrays arrays();
   double kinetic_energy_local() const;
@@ -117,11 +126,12 @@ class ExplicitSolver {
   std::unique_ptr<TimedLoads> loads_;
   std::unique_ptr<PrescribedMotions> motions_;
   std::unique_ptr<DiscreteParts> discrete_;
+  std::unique_ptr<ExplicitContact> contact_;
   std::unique_ptr<Expression> gravity_function_;
   std::array<double, 3> gravity_now_{};
   double time_ = 0, last_step_ = 0;
   long long n_steps_ = 0;
-  double stable_step_ = 0;
+  double stable_step_ = 0, solid_stable_step_ = 0;
   double step_calibration_ = 1;  // global (Lanczos) limit over the element estimate at the start
   int critical_rank_ = 0;
   LocalIndex critical_element_ = -1;

@@ -10,6 +10,8 @@
 #include "framework/base/error.hpp"
 #include "framework/base/resources.hpp"
 #include "physics/explicit/checkpoint.hpp"
+#include "physics/explicit/contact_output.hpp"
+#include "physics/explicit/explicit_contact.hpp"
 #include "physics/explicit/explicit_output.hpp"
 #include "physics/explicit/explicit_solver.hpp"
 
@@ -35,15 +37,20 @@ std::string blow_up_message(const ExplicitSolver& solver, const ExplicitRecorder
   if (recorder) {
     const EnergyBalance& balance = recorder->last_balance();
     text << "the energy balance failed, energy error " << balance.error << " beyond the limit "
-         << settings.energy_error_limit << " and the stored energy " << recorder->energy_growth()
-         << " x the energy put in, beyond the growth limit " << settings.energy_growth_limit
-         << " (kinetic " << balance.kinetic << " J, internal " << balance.internal
-         << " J, external work " << balance.external_work << " J)";
+         << settings.energy_error_limit;
+    if (recorder->beyond_stable_step())
+      text << " at a step above the stable limit";
+    else
+      text << " and the stored energy " << recorder->energy_growth()
+           << " x the energy put in, beyond the growth limit " << settings.energy_growth_limit;
+    text << " (kinetic " << balance.kinetic << " J, internal " << balance.internal << " J, contact "
+         << balance.contact << " J, external work " << balance.external_work << " J)";
   } else {
     text << "the energy balance failed with non-finite forces or inverted elements";
   }
   text << ". The step " << dt << " s is " << dt / stable_step << " x the stable step "
-       << stable_step << " s at the start; nothing after this point was written";
+       << stable_step << " s at the start, set by " << solver.critical_location()
+       << "; nothing after this point was written";
   return text.str();
 }
 
@@ -180,6 +187,21 @@ void ExplicitStep::run(StepContext& context) {
   if (!(initial_stable_step > 0) || !std::isfinite(initial_stable_step))
     throw RunError(path + ": no stable step could be found (degenerate elements or no mass?)");
   const bool fixed_step = settings.time_step > 0;
+  // A stiff contact can set a step far below the solids' one, which only the assembled model
+  // knows: the budget is checked again here, before the first step (like an unstable step).
+  if (!fixed_step) {
+    const double steps_needed = settings.end_time / (settings.safety_factor * initial_stable_step);
+    if (!(steps_needed <= settings.maximum_steps)) {
+      std::ostringstream problem;
+      problem.precision(3);
+      problem << deck << ": " << path << "/End time: End time " << settings.end_time
+              << " s at the step " << settings.safety_factor * initial_stable_step << " s set by "
+              << solver.critical_location() << " needs about " << steps_needed
+              << " steps, more than Maximum steps " << settings.maximum_steps
+              << "; use a shorter End time, a larger Maximum steps, or a smaller Penalty factor";
+      throw RunError(problem.str());
+    }
+  }
   // The limit needs the assembled model (its global estimate), so it is checked here.
   if (fixed_step && !settings.allow_unstable_step)
     refuse_unstable_step(settings.time_step, initial_stable_step, solver.critical_location(), deck,
@@ -270,6 +292,19 @@ void ExplicitStep::run(StepContext& context) {
       std::string(settings.kernel.full_integration ? "hex8 full integration" : "hex8 one point") +
           ", total-Lagrangian St. Venant-Kirchhoff");
   summary.add(section, "stable step at start", initial_stable_step, "s");
+  if (!settings.contact_pairs.empty()) {
+    summary.add(section, "contact pairs", static_cast<double>(settings.contact_pairs.size()));
+    summary.add(section, "solids' stable step at end", solver.solid_stable_step(), "s");
+    summary.add(section, "contact critical step", solver.contact_stable_step(), "s");
+    for (const std::string& name : recorder.contact().untouched_pairs()) {
+      const std::string warning = "contact pair '" + name +
+                                  "' never touched: its surfaces did not come within reach "
+                                  "(check the sets and the parts' placement)";
+      summary.add(section, "warning", warning);
+      if (comm.is_root())
+        std::fprintf(stderr, "railfe: warning: %s: %s\n", path.c_str(), warning.c_str());
+    }
+  }
   summary.add(section, "stable step set by", solver.critical_location());
   summary.add(section, "stable step calibration (Lanczos / L over c_P)", solver.step_calibration());
   summary.add(section, "step",
@@ -287,6 +322,21 @@ void ExplicitStep::run(StepContext& context) {
   summary.add(section, "time: stepping", loop_seconds, "s");
   summary.add(section, "time per element-step (wall x ranks)",
               1e6 * loop_seconds * comm.n_ranks() / element_steps, "us");
+  if (!settings.contact_pairs.empty()) {
+    // Rank 0's share: every rank evaluates the whole contact, so it is the same on each.
+    const double contact_seconds = solver.contact().seconds();
+    std::size_t slaves = 0;
+    for (const PenaltyContactPair& pair : solver.contact().pairs())
+      slaves += pair.slaves().size();
+    summary.add(section, "time: contact (exchange, search, forces)", contact_seconds, "s");
+    summary.add(section, "contact share of stepping",
+                contact_seconds / std::max(loop_seconds, 1e-9));
+    summary.add(section, "slave nodes", static_cast<double>(slaves));
+    summary.add(section, "contact time per slave node-step",
+                1e9 * contact_seconds /
+                    std::max(1.0, static_cast<double>(slaves) * static_cast<double>(steps_taken)),
+                "ns");
+  }
   summary.add(section, "peak memory per rank",
               static_cast<double>(peak_resident_bytes()) / 1048576.0, "MiB");
 }

@@ -1,0 +1,253 @@
+#include "contact/enforcement/penalty_contact_pair.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "contact/search/bucket_search.hpp"
+#include "contact/search/quad_projection.hpp"
+
+namespace railfe {
+
+namespace {
+
+using Vector = std::array<double, 3>;
+
+double dot(const Vector& a, const Vector& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+double norm(const Vector& a) {
+  return std::sqrt(dot(a, a));
+}
+
+// Unit normal of the bilinear face through \p corners at (xi, eta): ∂x/∂ξ × ∂x/∂η.
+Vector face_normal(const std::array<const double*, 4>& c, double xi, double eta) {
+  Vector dxi{}, deta{};
+  for (int d = 0; d < 3; ++d) {
+    dxi[d] = 0.25 * ((1 - eta) * (c[1][d] - c[0][d]) + (1 + eta) * (c[2][d] - c[3][d]));
+    deta[d] = 0.25 * ((1 - xi) * (c[3][d] - c[0][d]) + (1 + xi) * (c[2][d] - c[1][d]));
+  }
+  Vector n{dxi[1] * deta[2] - dxi[2] * deta[1], dxi[2] * deta[0] - dxi[0] * deta[2],
+           dxi[0] * deta[1] - dxi[1] * deta[0]};
+  const double length = norm(n);
+  for (double& value : n)
+    value /= length;
+  return n;
+}
+
+}  // namespace
+
+PenaltyContactPair::PenaltyContactPair(PenaltyPairGeometry geometry, PenaltyPairSettings settings)
+    : geometry_(std::move(geometry)), settings_(std::move(settings)) {
+  const auto n_faces = geometry_.master_faces.size();
+  if (geometry_.face_stiffness.size() != n_faces ||
+      geometry_.slave_area.size() != geometry_.slave_nodes.size() ||
+      geometry_.mass.size() != static_cast<std::size_t>(geometry_.n_surface_nodes))
+    throw std::invalid_argument("contact pair '" + settings_.name + "': inconsistent sizes");
+  if (settings_.search_interval < 1)
+    throw std::invalid_argument("contact pair '" + settings_.name + "': search interval < 1");
+  search_ = std::make_unique<BucketSearch>(geometry_.master_faces);
+  slaves_.resize(geometry_.slave_nodes.size());
+  double lightest = 1e300;
+  for (int node : geometry_.slave_nodes)
+    lightest = std::min(lightest, geometry_.mass[node]);
+  for (std::size_t f = 0; f < n_faces; ++f) {
+    double face_mass = 0;
+    for (int node : geometry_.master_faces[f])
+      face_mass += 0.25 * geometry_.mass[node];
+    const double reduced = lightest * face_mass / (lightest + face_mass);
+    if (geometry_.face_stiffness[f] > 0)
+      stable_step_ = std::min(stable_step_, 2 * std::sqrt(reduced / geometry_.face_stiffness[f]));
+  }
+}
+
+PenaltyContactPair::~PenaltyContactPair() = default;
+PenaltyContactPair::PenaltyContactPair(PenaltyContactPair&&) noexcept = default;
+PenaltyContactPair& PenaltyContactPair::operator=(PenaltyContactPair&&) noexcept = default;
+
+void PenaltyContactPair::search(const double* x, double dt, double max_speed) {
+  // Both surfaces move: their relative motion until the next rebuild is at most twice the
+  // largest speed times the interval, and the margin catches what lies just beyond.
+  const double motion = 2 * max_speed * dt * settings_.search_interval;
+  search_->rebuild(x, settings_.search_margin + 2 * motion);
+  capture_left_ = 2 * motion;
+  steps_since_search_ = 0;
+}
+
+void PenaltyContactPair::contact_point(int slave, const double* x) {
+  SlaveContact& contact = slaves_[slave];
+  const double* position = x + 3 * geometry_.slave_nodes[slave];
+  const ContactPoint found = find_contact_point(*search_, x, position, scratch_);
+  contact.face = -1;
+  if (found.face < 0 || !(found.projection.gap < 0))
+    return;
+  const auto& nodes = geometry_.master_faces[found.face];
+  const std::array<const double*, 4> corners = {x + 3 * nodes[0], x + 3 * nodes[1],
+                                                x + 3 * nodes[2], x + 3 * nodes[3]};
+  // A node behind the plane of a face whose nearest point is on the surface's rim is beside
+  // the surface, not in it (a block past the end of a plate): it gets no force.
+  if (found.projection.on_boundary) {
+    const Vector n = face_normal(corners, found.projection.xi, found.projection.eta);
+    Vector offset{};
+    for (int d = 0; d < 3; ++d)
+      offset[d] = position[d] - found.projection.point[d];
+    const double along = dot(offset, n);
+    for (int d = 0; d < 3; ++d)
+      offset[d] -= along * n[d];
+    if (norm(offset) > 1e-3 * std::abs(found.projection.gap) + 1e-12)
+      return;
+  }
+  contact.face = found.face;
+  contact.xi = found.projection.xi;
+  contact.eta = found.projection.eta;
+  contact.gap = found.projection.gap;
+  contact.normal = found.projection.normal;
+  contact.point = found.projection.point;
+}
+
+void PenaltyContactPair::locate(const double* x) {
+  search(x, 0, 0);
+  for (std::size_t s = 0; s < slaves_.size(); ++s)
+    contact_point(static_cast<int>(s), x);
+}
+
+void PenaltyContactPair::evaluate(const double* x, const double* du, double dt, double max_speed,
+                                  double* force) {
+  const double step_motion = 2 * max_speed * dt;
+  if (calls_ == 0 || steps_since_search_ >= settings_.search_interval ||
+      step_motion > capture_left_) {
+    search(x, dt, max_speed);
+  }
+  capture_left_ -= step_motion;
+  ++steps_since_search_;
+  ++calls_;
+
+  const double dissipated = totals_.dissipated, frictional = totals_.frictional_work;
+  totals_ = PenaltyPairTotals{};
+  totals_.dissipated = dissipated;
+  totals_.frictional_work = frictional;
+  Vector weighted_normal{};
+  const bool friction = settings_.friction.kind != FrictionLaw::Kind::none;
+  for (std::size_t s = 0; s < slaves_.size(); ++s) {
+    SlaveContact& contact = slaves_[s];
+    const Vector previous_tangential = contact.tangential_force;
+    contact_point(static_cast<int>(s), x);
+    if (contact.face < 0) {
+      contact = SlaveContact{};
+      continue;
+    }
+    const int slave_node = geometry_.slave_nodes[s];
+    const auto& face = geometry_.master_faces[contact.face];
+    const std::array<double, 4> shape = quad_shape_functions(contact.xi, contact.eta);
+    const double k = geometry_.face_stiffness[contact.face];
+    const Vector& n = contact.normal;
+
+    // Relative increment of the slave over the master point during the step.
+    Vector relative{};
+    for (int d = 0; d < 3; ++d) {
+      relative[d] = du[3 * slave_node + d];
+      for (int a = 0; a < 4; ++a)
+        relative[d] -= shape[a] * du[3 * face[a] + d];
+    }
+    const double approach = dot(relative, n);
+
+    double normal_force = -k * contact.gap;
+    if (settings_.damping_fraction > 0 && dt > 0) {
+      double face_mass = 0;
+      for (int a = 0; a < 4; ++a)
+        face_mass += shape[a] * geometry_.mass[face[a]];
+      const double slave_mass = geometry_.mass[slave_node];
+      const double reduced = slave_mass * face_mass / (slave_mass + face_mass);
+      const double damping = 2 * settings_.damping_fraction * std::sqrt(k * reduced);
+      // No tension: the damper may only lower the force to zero.
+      const double damper = std::max(-damping * approach / dt, -normal_force);
+      normal_force += damper;
+      totals_.dissipated += -damper * approach;
+    }
+
+    Vector tangential{};
+    contact.slipping = false;
+    contact.slip_velocity = {0, 0, 0};
+    if (friction) {
+      // The previous friction force turned into the new tangent plane, its length kept.
+      Vector carried = previous_tangential;
+      const double off_plane = dot(carried, n);
+      const double length = norm(carried);
+      for (int d = 0; d < 3; ++d)
+        carried[d] -= off_plane * n[d];
+      const double carried_length = norm(carried);
+      if (carried_length > 0)
+        for (double& value : carried)
+          value *= length / carried_length;
+      Vector increment{};
+      for (int d = 0; d < 3; ++d)
+        increment[d] = relative[d] - approach * n[d];
+      const double slip_speed = dt > 0 ? norm(increment) / dt : 0.0;
+      contact.coefficient = settings_.friction.coefficient(slip_speed);
+      Vector trial{};
+      for (int d = 0; d < 3; ++d)
+        trial[d] = carried[d] - k * increment[d];
+      const double trial_length = norm(trial);
+      const double bound = contact.coefficient * normal_force;
+      tangential = trial;
+      if (trial_length > bound) {
+        contact.slipping = true;
+        const double slip = (trial_length - bound) / k;
+        for (int d = 0; d < 3; ++d) {
+          tangential[d] = trial[d] * bound / trial_length;
+          if (dt > 0)
+            contact.slip_velocity[d] = -trial[d] / trial_length * slip / dt;
+        }
+        totals_.dissipated += bound * slip;
+        totals_.frictional_work += bound * slip;
+      }
+      totals_.friction_bound += bound;
+    }
+    contact.normal_force = normal_force;
+    contact.tangential_force = tangential;
+
+    Vector total{};
+    for (int d = 0; d < 3; ++d)
+      total[d] = normal_force * n[d] + tangential[d];
+    for (int d = 0; d < 3; ++d) {
+      force[3 * slave_node + d] += total[d];
+      for (int a = 0; a < 4; ++a)
+        force[3 * face[a] + d] -= shape[a] * total[d];
+      totals_.force[d] += total[d];
+      weighted_normal[d] += normal_force * n[d];
+    }
+    totals_.normal_force += normal_force;
+    totals_.area += geometry_.slave_area[s];
+    totals_.active += 1;
+    totals_.slipping += contact.slipping ? 1 : 0;
+    totals_.max_penetration = std::max(totals_.max_penetration, -contact.gap);
+    totals_.stored_energy += 0.5 * k * contact.gap * contact.gap +
+                             (friction ? 0.5 * dot(tangential, tangential) / k : 0);
+  }
+  const double length = norm(weighted_normal);
+  if (length > 0)
+    for (int d = 0; d < 3; ++d)
+      totals_.normal[d] = weighted_normal[d] / length;
+}
+
+std::vector<double> PenaltyContactPair::state() const {
+  std::vector<double> values = {totals_.dissipated, totals_.frictional_work};
+  for (const SlaveContact& contact : slaves_)
+    values.insert(values.end(), contact.tangential_force.begin(), contact.tangential_force.end());
+  return values;
+}
+
+bool PenaltyContactPair::restore(const std::vector<double>& values) {
+  if (values.size() != 2 + 3 * slaves_.size())
+    return false;
+  totals_.dissipated = values[0];
+  totals_.frictional_work = values[1];
+  for (std::size_t s = 0; s < slaves_.size(); ++s)
+    std::copy_n(values.begin() + 2 + 3 * static_cast<std::ptrdiff_t>(s), 3,
+                slaves_[s].tangential_force.begin());
+  calls_ = 0;
+  return true;
+}
+
+}  // namespace railfe

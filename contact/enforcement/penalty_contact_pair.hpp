@@ -1,0 +1,119 @@
+#pragma once
+/// \file
+/// Penalty node-to-segment contact between a slave node set and a master surface of bilinear
+/// quadrilaterals, with Coulomb or velocity-dependent friction by return mapping on the
+/// incremental slip (docs/theory.md#penalty-contact). The pair sees plain arrays of its own
+/// surface nodes (positions, step increments, forces); the time scheme that owns the nodes
+/// (explicit dynamics) gathers and scatters them. One evaluate() per step; no allocation per step
+/// once the search has warmed up.
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "contact/enforcement/friction_law.hpp"
+
+namespace railfe {
+
+class BucketSearch;
+
+/// What a pair is made of, numbered within its surface: node i of the surface has its
+/// coordinates at 3i .. 3i+2 of every array passed to the pair.
+struct PenaltyPairGeometry {
+  std::vector<int> slave_nodes;                  ///< surface indices of the slave nodes
+  std::vector<double> slave_area;                ///< tributary area of each slave node (m²)
+  std::vector<std::array<int, 4>> master_faces;  ///< surface indices, outward node order
+  std::vector<double> face_stiffness;            ///< penalty stiffness k of each face (N/m)
+  std::vector<double> mass;                      ///< lumped mass of every surface node (kg)
+  int n_surface_nodes = 0;                       ///< size of the surface
+};
+
+/// The choices of a pair besides its geometry.
+struct PenaltyPairSettings {
+  std::string name;             ///< its deck name, for messages and files
+  double damping_fraction = 0;  ///< normal damping as a fraction of critical, c = 2ζ√(k m)
+  FrictionLaw friction;         ///< friction law
+  int search_interval = 10;     ///< steps between rebuilds of the bucket search
+  double search_margin = 0;     ///< distance beyond the motion at which faces are caught (m)
+  std::array<double, 3> longitudinal{1, 0, 0};  ///< first tangent direction of the results (t₁)
+};
+
+/// The state of one slave node after the last evaluate().
+struct SlaveContact {
+  int face = -1;                             ///< master face in contact, −1 = none
+  double xi = 0, eta = 0;                    ///< its natural coordinates on the face
+  double gap = 0;                            ///< signed normal distance (m), < 0 = penetration
+  double normal_force = 0;                   ///< ≥ 0 (N), on the slave along the normal
+  std::array<double, 3> normal{};            ///< unit contact normal (master towards slave)
+  std::array<double, 3> point{};             ///< projection on the master surface (m)
+  std::array<double, 3> tangential_force{};  ///< friction force on the slave (N)
+  std::array<double, 3> slip_velocity{};     ///< slave relative to master, slip part (m/s)
+  double coefficient = 0;                    ///< μ used in the step
+  bool slipping = false;                     ///< the friction bound was reached
+};
+
+/// Sums over the pair after the last evaluate(): forces on the slave side.
+struct PenaltyPairTotals {
+  std::array<double, 3> force{};   ///< total contact force on the slave side (N)
+  std::array<double, 3> normal{};  ///< force-weighted mean contact normal (unit; 0 if no contact)
+  double normal_force = 0;         ///< sum of normal forces (N)
+  double friction_bound = 0;       ///< sum of μ·N over active nodes (N)
+  double area = 0;                 ///< tributary area of the active slave nodes (m²)
+  int active = 0;                  ///< slave nodes in contact
+  int slipping = 0;                ///< of which slipping
+  double max_penetration = 0;      ///< largest −gap (m)
+  double stored_energy = 0;        ///< ½ k g² + |f_t|²/2k over active nodes (J)
+  double dissipated = 0;           ///< frictional plus damping work since the start (J)
+  double frictional_work = 0;      ///< frictional part of dissipated (J)
+};
+
+/// One penalty contact pair.
+class PenaltyContactPair {
+ public:
+  /// A pair over \p geometry. Throws std::invalid_argument for inconsistent sizes.
+  PenaltyContactPair(PenaltyPairGeometry geometry, PenaltyPairSettings settings);
+  ~PenaltyContactPair();
+  PenaltyContactPair(PenaltyContactPair&&) noexcept;
+  PenaltyContactPair& operator=(PenaltyContactPair&&) noexcept;
+
+  /// Critical step of the contact springs: the smallest 2√(m/k) over the faces, m the reduced
+  /// mass of the lightest slave node and the face's mean nodal mass (s).
+  double stable_step() const { return stable_step_; }
+  /// Finds the contact points at positions \p x (3 per surface node) without forces, for the
+  /// checks at the start; fills slaves().
+  void locate(const double* x);
+  /// One step: contact points at \p x, increments \p du of the step (3 per surface node),
+  /// step \p dt (s; 0 at the start: no friction increment), largest surface speed \p max_speed
+  /// (m/s, for the search). Adds the contact forces to \p force (3 per surface node).
+  void evaluate(const double* x, const double* du, double dt, double max_speed, double* force);
+  /// Per slave node, in the order of the geometry's slave_nodes.
+  const std::vector<SlaveContact>& slaves() const { return slaves_; }
+  /// Sums of the last evaluate().
+  const PenaltyPairTotals& totals() const { return totals_; }
+  /// The geometry.
+  const PenaltyPairGeometry& geometry() const { return geometry_; }
+  /// The settings.
+  const PenaltyPairSettings& settings() const { return settings_; }
+  /// Everything that changes between steps, for checkpoints.
+  std::vector<double> state() const;
+  /// Restores state(); false if the size does not fit.
+  bool restore(const std::vector<double>& values);
+
+ private:
+  void search(const double* x, double dt, double max_speed);
+  void contact_point(int slave, const double* x);
+
+  PenaltyPairGeometry geometry_;
+  PenaltyPairSettings settings_;
+  std::unique_ptr<BucketSearch> search_;
+  std::vector<int> scratch_;
+  std::vector<SlaveContact> slaves_;
+  PenaltyPairTotals totals_;
+  double stable_step_ = 1e300;
+  long long calls_ = 0;
+  int steps_since_search_ = 0;
+  double capture_left_ = 0;  // relative motion the last rebuild still covers (m)
+};
+
+}  // namespace railfe

@@ -1,0 +1,132 @@
+// Penalty contact of one slave node on one flat master face: the normal force is k times the
+// penetration, shared by the face's nodes with the bilinear shape functions; Coulomb friction
+// by return mapping sticks (elastic, f_t = −k Δe) below μN and slides at μN above it,
+// dissipating μN times the slip; the velocity-dependent law gives μ(Δe/Δt).
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "contact/enforcement/penalty_contact_pair.hpp"
+
+namespace railfe {
+namespace {
+
+constexpr double kStiffness = 2e8;  // N/m
+
+// Surface nodes 0-3: the unit square z = 0 (normal +z); node 4: the slave.
+PenaltyContactPair one_face_pair(FrictionLaw friction = {}, double damping = 0) {
+  PenaltyPairGeometry geometry;
+  geometry.n_surface_nodes = 5;
+  geometry.master_faces = {{0, 1, 2, 3}};
+  geometry.face_stiffness = {kStiffness};
+  geometry.slave_nodes = {4};
+  geometry.slave_area = {1e-4};
+  geometry.mass = {1, 1, 1, 1, 0.5};
+  PenaltyPairSettings settings;
+  settings.name = "test";
+  settings.friction = friction;
+  settings.damping_fraction = damping;
+  settings.search_margin = 0.1;
+  return PenaltyContactPair(geometry, settings);
+}
+
+std::vector<double> positions(double x, double y, double z) {
+  return {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, x, y, z};
+}
+
+TEST(PenaltyContact, NormalForceIsStiffnessTimesPenetrationSharedByShapeFunctions) {
+  PenaltyContactPair pair = one_face_pair();
+  const auto x = positions(0.3, 0.4, -1e-5);
+  std::vector<double> du(15, 0.0), force(15, 0.0);
+  pair.evaluate(x.data(), du.data(), 1e-7, 0, force.data());
+  const double normal = kStiffness * 1e-5;
+  EXPECT_NEAR(force[14], normal, 1e-9 * normal);
+  EXPECT_NEAR(force[12], 0, 1e-12 * normal);
+  // Bilinear shares at (ξ, η) = (−0.4, −0.2): N0 = (1.4)(1.2)/4 ...
+  const double shares[4] = {0.7 * 0.6, 0.3 * 0.6, 0.3 * 0.4, 0.7 * 0.4};
+  for (int a = 0; a < 4; ++a)
+    EXPECT_NEAR(force[3 * a + 2], -shares[a] * normal, 1e-9 * normal) << "master node " << a;
+  EXPECT_EQ(pair.totals().active, 1);
+  EXPECT_NEAR(pair.totals().stored_energy, 0.5 * kStiffness * 1e-10, 1e-9 * kStiffness * 1e-10);
+  EXPECT_NEAR(pair.totals().area, 1e-4, 1e-18);
+}
+
+TEST(PenaltyContact, SeparatedNodeFeelsNothing) {
+  PenaltyContactPair pair = one_face_pair();
+  const auto x = positions(0.3, 0.4, 1e-5);
+  std::vector<double> du(15, 0.0), force(15, 0.0);
+  pair.evaluate(x.data(), du.data(), 1e-7, 0, force.data());
+  for (double f : force)
+    EXPECT_EQ(f, 0.0);
+  EXPECT_EQ(pair.totals().active, 0);
+}
+
+TEST(PenaltyContact, CoulombSticksBelowTheBoundAndSlidesAtIt) {
+  const double mu = 0.3, penetration = 1e-5;
+  const double normal = kStiffness * penetration;
+  FrictionLaw coulomb{FrictionLaw::Kind::coulomb, mu, 0, 0};
+  PenaltyContactPair pair = one_face_pair(coulomb);
+  const auto x = positions(0.5, 0.5, -penetration);
+  std::vector<double> du(15, 0.0), force(15, 0.0);
+  // A tangential increment a tenth of the elastic range: stick, f_t = −k Δe.
+  const double elastic_range = mu * normal / kStiffness;
+  du[12] = 0.1 * elastic_range;
+  pair.evaluate(x.data(), du.data(), 1e-7, 1.0, force.data());
+  EXPECT_NEAR(force[12], -0.1 * mu * normal, 1e-9 * normal);
+  EXPECT_FALSE(pair.slaves()[0].slipping);
+  EXPECT_EQ(pair.totals().frictional_work, 0.0);
+  // The same again: the stick force accumulates (the friction history is kept).
+  std::fill(force.begin(), force.end(), 0.0);
+  pair.evaluate(x.data(), du.data(), 1e-7, 1.0, force.data());
+  EXPECT_NEAR(force[12], -0.2 * mu * normal, 1e-9 * normal);
+  // Far past the range: slide at μN against the motion; slip = trial excess over k.
+  std::fill(force.begin(), force.end(), 0.0);
+  du[12] = 3 * elastic_range;
+  pair.evaluate(x.data(), du.data(), 1e-7, 1.0, force.data());
+  EXPECT_NEAR(force[12], -mu * normal, 1e-9 * normal);
+  EXPECT_TRUE(pair.slaves()[0].slipping);
+  const double slip = (0.2 + 3 - 1) * elastic_range;
+  EXPECT_NEAR(pair.totals().frictional_work, mu * normal * slip, 1e-9 * mu * normal * slip);
+  EXPECT_NEAR(pair.slaves()[0].slip_velocity[0], slip / 1e-7, 1e-9 * slip / 1e-7);
+  // Master nodes take the reaction: the forces sum to zero.
+  double sum = 0;
+  for (int node = 0; node < 5; ++node)
+    sum += force[3 * node];
+  EXPECT_NEAR(sum, 0, 1e-9 * normal);
+}
+
+TEST(PenaltyContact, VelocityDependentCoefficientFollowsTheSlipSpeed) {
+  // 1 m/s of slip over 0.1 us moves 0.1 um: 20 N of trial force against a 2 N normal force.
+  const double penetration = 1e-8, dt = 1e-7;
+  const double normal = kStiffness * penetration;
+  FrictionLaw falling{FrictionLaw::Kind::velocity_dependent, 0.45, 0.3, 2.0};
+  PenaltyContactPair pair = one_face_pair(falling);
+  const auto x = positions(0.5, 0.5, -penetration);
+  std::vector<double> du(15, 0.0), force(15, 0.0);
+  du[13] = 1e-7;  // 1 m/s of slip in y
+  pair.evaluate(x.data(), du.data(), dt, 1.0, force.data());
+  const double mu = 0.3 + 0.15 * std::exp(-2.0 * 1.0);
+  EXPECT_NEAR(pair.slaves()[0].coefficient, mu, 1e-12);
+  EXPECT_NEAR(force[13], -mu * normal, 1e-9 * normal);
+  EXPECT_NEAR(pair.totals().friction_bound, mu * normal, 1e-9 * normal);
+}
+
+TEST(PenaltyContact, CriticalStepIsTwiceRootOfReducedMassOverStiffness) {
+  PenaltyContactPair pair = one_face_pair();
+  // Slave 0.5 kg, face mean 1 kg: reduced mass 1/3 kg.
+  EXPECT_NEAR(pair.stable_step(), 2 * std::sqrt((1.0 / 3) / kStiffness), 1e-15);
+}
+
+TEST(PenaltyContact, DampingNeverPullsTheSurfacesTogether) {
+  PenaltyContactPair pair = one_face_pair({}, 1.0);
+  const auto x = positions(0.5, 0.5, -1e-6);
+  std::vector<double> du(15, 0.0), force(15, 0.0);
+  du[14] = 1e-3;  // separating fast: the damper would pull, and is clipped at zero force
+  pair.evaluate(x.data(), du.data(), 1e-7, 1e4, force.data());
+  EXPECT_EQ(pair.slaves()[0].normal_force, 0.0);
+  EXPECT_NEAR(force[14], 0, 1e-12);
+}
+
+}  // namespace
+}  // namespace railfe

@@ -1,0 +1,54 @@
+#pragma once
+/// \file
+/// What the contact pairs of an explicit step write: per pair a history
+/// <step>_contact_<pair>.csv (normal and tangential force in the contact frame, friction bound,
+/// area, active and slipping nodes, penetration, frictional work) every history interval, and at
+/// the deck's Patch times the patch fields <step>_contact_<pair>_patch_<k>.csv (per active slave
+/// node: position, pressure, shear traction, slip velocity, stick or slip). The contact frame is
+/// n (the force-weighted mean normal, master towards slave), t1 (Longitudinal direction projected
+/// onto the contact plane) and t2 = n x t1. Rank 0 writes; every rank holds the same contact.
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace railfe {
+
+class CsvWriter;
+class ExplicitSolver;
+class OutputDirectory;
+struct ExplicitSettings;
+
+/// The contact outputs of one explicit step.
+class ContactRecorder {
+ public:
+  /// Opens the history files of every pair (rank 0 writes when \p root).
+  ContactRecorder(const ExplicitSettings& settings, const ExplicitSolver& solver,
+                  OutputDirectory& output, const std::string& step_name, bool root);
+  ~ContactRecorder();
+  /// Writes a history row when \p force_row or the step is due, and the patch fields whose time
+  /// has come.
+  void record(bool force_row);
+  /// Names of the pairs that never touched (for a warning).
+  std::vector<std::string> untouched_pairs() const;
+  /// Rows written so far and the next patch, for checkpoints.
+  std::vector<double> state() const;
+  /// Restores state() and rewrites the rows (rank 0).
+  void restore(const std::vector<double>& values);
+
+ private:
+  void write_patch(std::size_t pair, std::size_t index);
+
+  const ExplicitSettings& settings_;
+  const ExplicitSolver& solver_;
+  OutputDirectory& output_;
+  std::string step_name_;
+  bool root_;
+  std::vector<std::unique_ptr<CsvWriter>> histories_;
+  std::vector<std::vector<std::vector<double>>> rows_;  // per pair
+  std::vector<std::size_t> next_patch_;                 // per pair: index of the next patch time
+  long long last_step_ = -1;
+};
+
+}  // namespace railfe

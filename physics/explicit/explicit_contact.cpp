@@ -1,0 +1,251 @@
+#include "physics/explicit/explicit_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "framework/base/error.hpp"
+#include "framework/base/resources.hpp"
+#include "framework/mesh/hex8_shape.hpp"
+#include "framework/mesh/partition.hpp"
+#include "physics/materials/elastic_material.hpp"
+
+namespace railfe {
+
+namespace {
+
+// Volume of global hex8 element \p element in the reference configuration.
+double element_volume(const Mesh& mesh, GlobalIndex element) {
+  const ElementBlock& block = mesh.blocks[mesh.block_of(element)];
+  const GlobalIndex* nodes = block.element_nodes(element - block.first_element);
+  double x[8][3], gradient[3][8];
+  for (int a = 0; a < 8; ++a)
+    for (int d = 0; d < 3; ++d)
+      x[a][d] = mesh.coordinates[3 * nodes[a] + d];
+  const Hex8GaussTable& table = hex8_gauss_table();
+  double volume = 0;
+  for (int q = 0; q < 8; ++q)
+    volume += hex8_gradients(x, table.dN[q], gradient);
+  return volume;
+}
+
+int surface_index(const std::vector<GlobalIndex>& surface, GlobalIndex node) {
+  return static_cast<int>(std::lower_bound(surface.begin(), surface.end(), node) - surface.begin());
+}
+
+}  // namespace
+
+ExplicitContact::ExplicitContact(const std::vector<ContactPairSpec>& specs,
+                                 const MeshPartition& partition, const MaterialTable& materials,
+                                 const std::string& deck, const std::string& path)
+    : specs_(specs), partition_(partition), materials_(materials), deck_(deck), path_(path) {
+  for (const ContactPairSpec& spec : specs_) {
+    surfaces_.push_back(contact_surface_nodes(spec, partition.mesh(), deck, path));
+    const ContactSurfaceNodes& surface = surfaces_.back();
+    surface_.insert(surface_.end(), surface.slave_nodes.begin(), surface.slave_nodes.end());
+    for (const auto& face : surface.master_faces)
+      surface_.insert(surface_.end(), face.begin(), face.end());
+  }
+  std::sort(surface_.begin(), surface_.end());
+  surface_.erase(std::unique(surface_.begin(), surface_.end()), surface_.end());
+  owned_.assign(surface_.size(), -1);
+  for (std::size_t i = 0; i < surface_.size(); ++i) {
+    const LocalIndex local = partition.local_node(surface_[i]);
+    if (local >= 0 && local < partition.n_owned_nodes())
+      owned_[i] = local;
+  }
+  const std::size_t n = surface_.size();
+  exchange_.assign(6 * n, 0.0);
+  positions_.assign(3 * n, 0.0);
+  increments_.assign(3 * n, 0.0);
+  forces_.assign(3 * n, 0.0);
+  touched_.assign(specs_.size(), false);
+}
+
+ExplicitContact::~ExplicitContact() = default;
+
+void ExplicitContact::share(const double* x, const double* u, const double* du) {
+  std::fill(exchange_.begin(), exchange_.end(), 0.0);
+  const std::size_t n = surface_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const LocalIndex node = owned_[i];
+    if (node < 0)
+      continue;
+    for (int d = 0; d < 3; ++d) {
+      exchange_[3 * i + d] = x[3 * node + d] + u[3 * node + d];
+      if (du)
+        exchange_[3 * (n + i) + d] = du[3 * node + d];
+    }
+  }
+  partition_.comm().sum_in_place(exchange_);
+  std::copy_n(exchange_.begin(), 3 * n, positions_.begin());
+  std::copy_n(exchange_.begin() + 3 * static_cast<std::ptrdiff_t>(n), 3 * n, increments_.begin());
+}
+
+void ExplicitContact::initialise(const std::vector<double>& owned_mass, double solid_step,
+                                 const double* x, const double* u) {
+  if (specs_.empty())
+    return;
+  const Mesh& mesh = partition_.mesh();
+  std::vector<double> mass(surface_.size(), 0.0);
+  for (std::size_t i = 0; i < surface_.size(); ++i)
+    if (owned_[i] >= 0)
+      mass[i] = owned_mass[owned_[i]];
+  partition_.comm().sum_in_place(mass);
+  share(x, u, nullptr);
+
+  pairs_.clear();
+  for (std::size_t p = 0; p < specs_.size(); ++p) {
+    const ContactPairSpec& spec = specs_[p];
+    const ContactSurfaceNodes& surface = surfaces_[p];
+    PenaltyPairGeometry geometry;
+    geometry.n_surface_nodes = static_cast<int>(surface_.size());
+    geometry.mass = mass;
+    geometry.slave_area = surface.slave_area;
+    double lightest = 1e300;
+    for (GlobalIndex node : surface.slave_nodes) {
+      geometry.slave_nodes.push_back(surface_index(surface_, node));
+      lightest = std::min(lightest, mass[geometry.slave_nodes.back()]);
+    }
+    double size_sum = 0;
+    for (std::size_t f = 0; f < surface.master_faces.size(); ++f) {
+      std::array<int, 4> face;
+      double face_mass = 0;
+      for (int a = 0; a < 4; ++a) {
+        face[a] = surface_index(surface_, surface.master_faces[f][a]);
+        face_mass += 0.25 * mass[face[a]];
+      }
+      geometry.master_faces.push_back(face);
+      const double* c = mesh.coordinates.data();
+      const auto& nodes = surface.master_faces[f];
+      const double area =
+          quad_area(c + 3 * nodes[0], c + 3 * nodes[1], c + 3 * nodes[2], c + 3 * nodes[3]);
+      size_sum += std::sqrt(area);
+      double stiffness;
+      if (spec.mass_penalty) {
+        // The reduced mass of the lightest slave node and the face: with it the contact's
+        // critical step is 2 dt / sqrt(f), so f < 4 never limits the step.
+        const double reduced = lightest * face_mass / (lightest + face_mass);
+        stiffness = spec.penalty_factor * reduced / (solid_step * solid_step);
+      } else {
+        const GlobalIndex element = surface.master_elements[f];
+        const ElasticMaterial& material = materials_.of_block(mesh.block_of(element));
+        const double bulk = material.young / (3 * (1 - 2 * material.poisson));
+        stiffness = spec.penalty_factor * bulk * area * area / element_volume(mesh, element);
+      }
+      geometry.face_stiffness.push_back(stiffness);
+    }
+    PenaltyPairSettings settings;
+    settings.name = spec.name;
+    settings.damping_fraction = spec.damping_fraction;
+    settings.friction = spec.friction;
+    settings.search_interval = spec.search_interval;
+    const double mean_size = size_sum / static_cast<double>(surface.master_faces.size());
+    settings.search_margin = spec.search_margin > 0 ? spec.search_margin : 0.5 * mean_size;
+    settings.longitudinal = spec.longitudinal;
+    pairs_.emplace_back(std::move(geometry), settings);
+  }
+  // Check time refused deep starts in the reference positions; a preload can still move the
+  // bodies into each other.
+  std::vector<double> global(3 * static_cast<std::size_t>(mesh.n_nodes()), 0.0);
+  for (std::size_t i = 0; i < surface_.size(); ++i)
+    std::copy_n(&positions_[3 * i], 3, &global[3 * surface_[i]]);
+  for (std::size_t p = 0; p < specs_.size(); ++p) {
+    const std::string problem = start_penetration_problem(specs_[p], surfaces_[p], mesh, global);
+    if (!problem.empty())
+      throw RunError(deck_ + ": " + path_ + "/Contact pairs/" + specs_[p].name + ": " + problem +
+                     " after the preload of Start from; " + kPlacementAdvice);
+  }
+}
+
+void ExplicitContact::add_forces(const double* x, const double* u, const double* du, double dt,
+                                 double* residual) {
+  if (pairs_.empty())
+    return;
+  const Stopwatch clock;
+  share(x, u, du);
+  double fastest = 0;
+  if (dt > 0) {
+    for (std::size_t i = 0; i < surface_.size(); ++i) {
+      const double* increment = &increments_[3 * i];
+      fastest = std::max(fastest, std::hypot(increment[0], increment[1], increment[2]));
+    }
+    fastest /= dt;
+  }
+  std::fill(forces_.begin(), forces_.end(), 0.0);
+  for (std::size_t p = 0; p < pairs_.size(); ++p) {
+    pairs_[p].evaluate(positions_.data(), increments_.data(), dt, fastest, forces_.data());
+    if (pairs_[p].totals().active > 0)
+      touched_[p] = true;
+  }
+  for (std::size_t i = 0; i < surface_.size(); ++i) {
+    const LocalIndex node = owned_[i];
+    if (node < 0)
+      continue;
+    for (int d = 0; d < 3; ++d)
+      residual[3 * node + d] += forces_[3 * i + d];
+  }
+  seconds_ += clock.seconds();
+}
+
+double ExplicitContact::stable_step() const {
+  double step = 1e300;
+  for (const PenaltyContactPair& pair : pairs_)
+    step = std::min(step, pair.stable_step());
+  return step;
+}
+
+std::string ExplicitContact::critical_pair() const {
+  std::string name;
+  double step = 1e300;
+  for (const PenaltyContactPair& pair : pairs_) {
+    if (pair.stable_step() < step) {
+      step = pair.stable_step();
+      name = pair.settings().name;
+    }
+  }
+  return name;
+}
+
+double ExplicitContact::stored_energy() const {
+  double energy = 0;
+  for (const PenaltyContactPair& pair : pairs_)
+    energy += pair.totals().stored_energy;
+  return energy;
+}
+
+double ExplicitContact::dissipated() const {
+  double energy = 0;
+  for (const PenaltyContactPair& pair : pairs_)
+    energy += pair.totals().dissipated;
+  return energy;
+}
+
+std::vector<double> ExplicitContact::state() const {
+  std::vector<double> values;
+  for (const PenaltyContactPair& pair : pairs_) {
+    const std::vector<double> pair_state = pair.state();
+    values.push_back(static_cast<double>(pair_state.size()));
+    values.insert(values.end(), pair_state.begin(), pair_state.end());
+  }
+  return values;
+}
+
+bool ExplicitContact::restore(const std::vector<double>& values) {
+  std::size_t at = 0;
+  for (PenaltyContactPair& pair : pairs_) {
+    if (at >= values.size())
+      return false;
+    const auto size = static_cast<std::size_t>(values[at]);
+    if (at + 1 + size > values.size())
+      return false;
+    if (!pair.restore(
+            std::vector<double>(values.begin() + static_cast<std::ptrdiff_t>(at + 1),
+                                values.begin() + static_cast<std::ptrdiff_t>(at + 1 + size))))
+      return false;
+    at += 1 + size;
+  }
+  return at == values.size();
+}
+
+}  // namespace railfe

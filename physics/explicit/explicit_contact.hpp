@@ -1,0 +1,82 @@
+#pragma once
+/// \file
+/// The contact pairs of an explicit run. Every rank holds every pair's surfaces: each step the
+/// owners of the surface nodes share their positions and increments (one sum over ranks of
+/// 6 numbers per surface node), every rank evaluates every pair the same way, and each rank adds
+/// the forces of the nodes it owns. So no contact force is lost or counted twice at a rank
+/// boundary, and the friction history is the same on every rank. The cost is the surface's, not
+/// the model's; the exchange grows with the surface and the rank count (docs/theory.md).
+
+#include <string>
+#include <vector>
+
+#include "contact/enforcement/penalty_contact_pair.hpp"
+#include "framework/base/types.hpp"
+#include "physics/explicit/contact_settings.hpp"
+#include "physics/explicit/contact_surfaces.hpp"
+
+namespace railfe {
+
+class MaterialTable;
+class MeshPartition;
+
+/// All contact pairs of one explicit step.
+class ExplicitContact {
+ public:
+  /// Reads the pairs' surfaces off the mesh (every rank). Throws InputError naming \p deck and
+  /// \p path for a node that is both slave and master.
+  ExplicitContact(const std::vector<ContactPairSpec>& specs, const MeshPartition& partition,
+                  const MaterialTable& materials, const std::string& deck, const std::string& path);
+  ~ExplicitContact();
+
+  /// Whether the step has contact pairs.
+  bool empty() const { return pairs_.empty(); }
+  /// Sets the penalty stiffnesses from \p owned_mass (per owned node) and \p solid_step (the
+  /// solids' step, for the nodal-mass form), finds the contact points at the start (reference
+  /// \p x plus \p u, local arrays) and refuses a start penetration deeper than the pair's limit
+  /// (InputError naming the node and its position). Collective.
+  void initialise(const std::vector<double>& owned_mass, double solid_step, const double* x,
+                  const double* u);
+  /// Adds the contact forces at the state (\p x + \p u, step increments \p du of owned nodes,
+  /// step \p dt; 0 at the start) to \p residual (owned nodes). Collective.
+  void add_forces(const double* x, const double* u, const double* du, double dt, double* residual);
+  /// The smallest critical step of the pairs (s), +inf without pairs.
+  double stable_step() const;
+  /// The pair that sets stable_step(), for messages.
+  std::string critical_pair() const;
+  /// Energy stored in the penalty springs (J; the same on every rank).
+  double stored_energy() const;
+  /// Work dissipated by friction and contact damping since the start (J; every rank).
+  double dissipated() const;
+  /// Wall time spent in add_forces() on this rank since the start (s): exchange, search, forces.
+  double seconds() const { return seconds_; }
+  /// The pairs.
+  const std::vector<PenaltyContactPair>& pairs() const { return pairs_; }
+  /// The pairs' specifications.
+  const std::vector<ContactPairSpec>& specs() const { return specs_; }
+  /// Global node number of surface node \p i.
+  GlobalIndex surface_node(int i) const { return surface_[i]; }
+  /// Whether pair \p p has had a node in contact since the start.
+  bool ever_touched(std::size_t p) const { return touched_[p]; }
+  /// Friction histories and dissipated work, for checkpoints.
+  std::vector<double> state() const;
+  /// Restores state(); false if it does not fit.
+  bool restore(const std::vector<double>& values);
+
+ private:
+  void share(const double* x, const double* u, const double* du);
+
+  std::vector<ContactPairSpec> specs_;
+  const MeshPartition& partition_;
+  const MaterialTable& materials_;
+  std::string deck_, path_;
+  std::vector<GlobalIndex> surface_;  // global nodes of all pairs, ascending
+  std::vector<LocalIndex> owned_;     // local index of each surface node, −1 if not owned
+  std::vector<ContactSurfaceNodes> surfaces_;  // per pair, global numbers
+  std::vector<PenaltyContactPair> pairs_;
+  std::vector<double> exchange_, positions_, increments_, forces_;
+  std::vector<bool> touched_;
+  double seconds_ = 0;
+};
+
+}  // namespace railfe
