@@ -12,6 +12,7 @@
 #include "framework/deck/expression.hpp"
 #include "framework/mesh/hex8_topology.hpp"
 #include "physics/elements/hex8_enhanced_strain.hpp"
+#include "physics/elements/hex8_one_point.hpp"
 
 namespace railfe {
 
@@ -53,12 +54,15 @@ void assemble_hex8_matrix(FeMatrix& A, ElementMatrix element_matrix, Progress* p
 
 }  // namespace
 
-void assemble_elastic_stiffness(FeMatrix& K, const MaterialTable& materials, Progress* progress) {
+void assemble_elastic_stiffness(FeMatrix& K, const MaterialTable& materials, Progress* progress,
+                                double one_point_kappa) {
   assemble_hex8_matrix(
       K,
       [&](int block, const double x[8][3], double* matrix) {
         const ElasticMaterial& material = materials.of_block(block);
-        if (material.element == SolidElement::enhanced_strain) {
+        if (one_point_kappa >= 0) {
+          hex8_one_point_stiffness(x, material.lame(), one_point_kappa, matrix);
+        } else if (material.element == SolidElement::enhanced_strain) {
           hex8_enhanced_strain_stiffness(x, material.lame(), matrix);
         } else {
           hex8_stiffness(x, material.lame(), matrix);

@@ -22,10 +22,11 @@ void element_coordinates(const MeshPartition& partition, const LocalBlock& block
                          LocalIndex element, double x[8][3]);
 
 /// Assembles the stiffness of every local hex8 element into \p K (collective), in the formulation
-/// its material chooses (ElasticMaterial::element), reporting to \p progress (in local elements)
-/// if given.
+/// its material chooses (ElasticMaterial::element), or for every element the one-point hex8 with
+/// hourglass coefficient \p one_point_kappa when that is ≥ 0 (hex8_one_point.hpp), reporting to
+/// \p progress (in local elements) if given.
 void assemble_elastic_stiffness(FeMatrix& K, const MaterialTable& materials,
-                                Progress* progress = nullptr);
+                                Progress* progress = nullptr, double one_point_kappa = -1);
 
 /// Assembles the mass of every local hex8 element into \p M (collective): consistent, or lumped
 /// (row sums) when \p lumped.

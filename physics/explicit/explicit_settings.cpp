@@ -191,7 +191,7 @@ ParameterSpec explicit_parameters() {
   spec.sublist("Solid", solid, "Hex8 formulation.");
   load_parameters(spec);
   spec.sublist("Discrete parts", discrete_parameters(), "Masses, rigid bodies, springs.");
-  spec.named_sublists("Contact pairs", contact_pair_parameters(),
+  spec.named_sublists("Contact pairs", contact_pair_parameters(ContactUse::explicit_dynamics),
                       "Penalty node-to-segment contact between deformable bodies.");
   spec.sublist("Output", output_parameters(), "Energy, histories and snapshots.");
   ParameterSpec checkpoint("Checkpoint and restart.");
@@ -442,7 +442,7 @@ ExplicitSettings read_explicit_settings(const Teuchos::ParameterList& step, cons
   read_loads(step, deck, path, settings);
   read_discrete(step.sublist("Discrete parts"), deck, path + "/Discrete parts", settings);
   read_output(step.sublist("Output"), deck, path, settings);
-  settings.contact_pairs = read_contact_pairs(step, deck, path);
+  settings.contact_pairs = read_contact_pairs(step, deck, path, ContactUse::explicit_dynamics);
   for (const ContactPairSpec& pair : settings.contact_pairs)
     if (!pair.patch_times.empty() && pair.patch_times.back() > settings.end_time)
       throw_input_error(deck, path + "/Contact pairs/" + pair.name + "/Patch times",

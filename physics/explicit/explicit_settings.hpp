@@ -15,7 +15,7 @@
 
 #include "framework/deck/parameter_spec.hpp"
 #include "framework/mesh/mesh.hpp"
-#include "physics/explicit/contact_settings.hpp"
+#include "physics/common/contact_settings.hpp"
 #include "physics/explicit/solid_kernel.hpp"
 
 namespace railfe {

@@ -21,7 +21,7 @@
 namespace railfe {
 
 class DofMap;
-class ExplicitContact;
+class ContactPairs;
 class GhostExchange;
 class MaterialTable;
 class TimedLoads;
@@ -70,7 +70,7 @@ class ExplicitSolver {
   /// The contact pairs' critical step (s), +inf without contact.
   double contact_stable_step() const;
   /// The contact pairs.
-  const ExplicitContact& contact() const { return *contact_; }
+  const ContactPairs& contact() const { return *contact_; }
   /// Where the stable step is smallest, for messages ("element 12 of block 'rail' at (x, y, z)"
   /// or "spring–dampers").
   std::string critical_location() const;
@@ -126,7 +126,7 @@ class ExplicitSolver {
   std::unique_ptr<TimedLoads> loads_;
   std::unique_ptr<PrescribedMotions> motions_;
   std::unique_ptr<DiscreteParts> discrete_;
-  std::unique_ptr<ExplicitContact> contact_;
+  std::unique_ptr<ContactPairs> contact_;
   std::unique_ptr<Expression> gravity_function_;
   std::array<double, 3> gravity_now_{};
   double time_ = 0, last_step_ = 0;

@@ -9,9 +9,9 @@
 #include "framework/assembly/dof_map.hpp"
 #include "framework/base/error.hpp"
 #include "framework/base/resources.hpp"
+#include "physics/common/contact_pairs.hpp"
 #include "physics/explicit/checkpoint.hpp"
 #include "physics/explicit/contact_output.hpp"
-#include "physics/explicit/explicit_contact.hpp"
 #include "physics/explicit/explicit_output.hpp"
 #include "physics/explicit/explicit_solver.hpp"
 

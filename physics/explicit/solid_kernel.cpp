@@ -12,66 +12,12 @@
 #include "framework/mesh/partition.hpp"
 #include "physics/common/solid_assembly.hpp"
 #include "physics/elements/hex8.hpp"
+#include "physics/elements/hex8_one_point.hpp"
 #include "physics/materials/elastic_material.hpp"
 
 namespace railfe {
 
 namespace {
-
-// Mean gradients b_a / V = (1/V) ∫ ∂N_a/∂X dV (Flanagan–Belytschko), exact with 2×2×2 points;
-// they make one-point elements pass the patch test on distorted meshes. Returns V.
-double mean_gradients(const double x[8][3], double gradient[24]) {
-  const Hex8GaussTable& table = hex8_gauss_table();
-  std::fill(gradient, gradient + 24, 0.0);
-  double volume = 0;
-  for (int q = 0; q < 8; ++q) {
-    double g[3][8];
-    const double det = hex8_gradients(x, table.dN[q], g);
-    volume += det;
-    for (int i = 0; i < 3; ++i)
-      for (int a = 0; a < 8; ++a)
-        gradient[i * 8 + a] += det * g[i][a];
-  }
-  for (int k = 0; k < 24; ++k)
-    gradient[k] /= volume;
-  return volume;
-}
-
-// The hourglass base vectors h_α (ξη, ηζ, ζξ, ξηζ at the nodes).
-struct HourglassBase {
-  double h[4][8];
-  HourglassBase() {
-    for (int a = 0; a < 8; ++a) {
-      const double* r = kHex8NodeReference[a];
-      const double products[4] = {r[0] * r[1], r[1] * r[2], r[2] * r[0], r[0] * r[1] * r[2]};
-      for (int alpha = 0; alpha < 4; ++alpha)
-        h[alpha][a] = products[alpha];
-    }
-  }
-};
-const HourglassBase kHourglassBase;
-
-// The projections h_α · X_i of an element's reference coordinates (12 numbers).
-void hourglass_projections(const double x[8][3], double projection[12]) {
-  for (int alpha = 0; alpha < 4; ++alpha)
-    for (int i = 0; i < 3; ++i) {
-      double sum = 0;
-      for (int a = 0; a < 8; ++a)
-        sum += kHourglassBase.h[alpha][a] * x[a][i];
-      projection[alpha * 3 + i] = sum;
-    }
-}
-
-// γ_α = h_α − Σ_i (h_α · X_i) G_i from the projections and the mean gradients.
-inline void hourglass_from_projections(const double* projection, const double* gradient,
-                                       double gamma[32]) {
-  for (int alpha = 0; alpha < 4; ++alpha) {
-    const double* p = projection + 3 * alpha;
-    for (int a = 0; a < 8; ++a)
-      gamma[alpha * 8 + a] = kHourglassBase.h[alpha][a] - p[0] * gradient[a] -
-                             p[1] * gradient[8 + a] - p[2] * gradient[16 + a];
-  }
-}
 
 // Largest face area of an element with corners x (Exodus face order).
 double largest_face_area(const double x[8][3]) {
@@ -197,19 +143,16 @@ SolidElements build_solid_elements(const MeshPartition& partition, const Materia
       }
       elements.volume[e] = volume;
     } else {
-      const double volume = mean_gradients(x, gradient);
+      const double volume = hex8_mean_gradients(x, gradient);
       elements.volume[e] = volume;
       double* projection = &elements.hourglass_projection[12 * static_cast<std::size_t>(e)];
-      hourglass_projections(x, projection);
+      hex8_hourglass_projections(x, projection);
       double gamma[32];
-      hourglass_from_projections(projection, gradient, gamma);
-      double gradient_norm = 0;
-      for (int k = 0; k < 24; ++k)
-        gradient_norm += gradient[k] * gradient[k];
+      hex8_hourglass_vectors(projection, gradient, gamma);
       const double kappa = settings.hourglass_coefficient;
       double stiffness = 0;
       if (settings.hourglass == HourglassForm::stiffness) {
-        stiffness = kappa * (lame.lambda + 2 * lame.mu) * volume * gradient_norm / 3;
+        stiffness = hex8_hourglass_stiffness(gradient, volume, lame, kappa);
         elements.hourglass_scale[e] = stiffness;
       } else if (settings.hourglass == HourglassForm::viscous) {
         elements.hourglass_scale[e] =
@@ -343,8 +286,8 @@ SolidForceTotals add_internal_forces(const SolidElements& elements,
     length = volume / largest_face_area(xe);
     if (hourglass) {
       double gamma[32];
-      hourglass_from_projections(&elements.hourglass_projection[12 * static_cast<std::size_t>(e)],
-                                 gradient, gamma);
+      hex8_hourglass_vectors(&elements.hourglass_projection[12 * static_cast<std::size_t>(e)],
+                             gradient, gamma);
       const double scale = elements.hourglass_scale[e];
       const double(*field)[3] = stiffness_form ? ue : ve;
       for (int alpha = 0; alpha < 4; ++alpha) {
@@ -423,8 +366,8 @@ std::pair<double, std::string> smallest_step(const SolidElements& elements,
 }
 
 void hourglass_vectors(const SolidElements& elements, LocalIndex e, double gamma[32]) {
-  hourglass_from_projections(&elements.hourglass_projection[12 * static_cast<std::size_t>(e)],
-                             &elements.gradients[24 * static_cast<std::size_t>(e)], gamma);
+  hex8_hourglass_vectors(&elements.hourglass_projection[12 * static_cast<std::size_t>(e)],
+                         &elements.gradients[24 * static_cast<std::size_t>(e)], gamma);
 }
 
 void element_cauchy_stress(const SolidElements& elements, LocalIndex e, const double* u,

@@ -13,7 +13,10 @@
 #include "framework/output/csv_writer.hpp"
 #include "framework/output/exodus_writer.hpp"
 #include "framework/output/field_gather.hpp"
+#include "physics/common/contact_pairs.hpp"
+#include "physics/common/contact_tables.hpp"
 #include "physics/common/solid_assembly.hpp"
+#include "physics/statics/contact_newton.hpp"
 
 namespace railfe {
 
@@ -52,6 +55,28 @@ void StaticsStep::check(const CheckContext& context) {
                         "nodes of the solid mesh");
     }
   }
+  const auto& solid = parameters_->sublist("Solid");
+  one_point_kappa_ = solid.get<std::string>("Integration") == "one point"
+                         ? solid.get<double>("Hourglass coefficient")
+                         : -1.0;
+  if (one_point_kappa_ >= 0)
+    for (int block = 0; block < static_cast<int>(mesh.blocks.size()); ++block)
+      if (mesh.blocks[block].type == ElementType::hex8 &&
+          materials_->of_block(block).element == SolidElement::enhanced_strain)
+        throw_input_error(deck, context.path + "/Solid/Integration",
+                          "is 'one point', but block '" + mesh.blocks[block].name +
+                              "' has the enhanced-strain element (material '" +
+                              materials_->of_block(block).name + "')",
+                          "'full' with enhanced-strain materials, or Element 'full integration'");
+  contact_pairs_ = read_contact_pairs(*parameters_, deck, context.path, ContactUse::statics);
+  check_contact_pairs(contact_pairs_, mesh, deck, context.path);
+  if (contact_pairs_.empty()) {
+    for (const char* name : {"Contact iterations", "Contact tolerance"})
+      if (!parameters_->getEntry(name).isDefault())
+        throw_input_error(deck, context.path + "/" + name,
+                          "is used only with Contact pairs, and the step has none",
+                          "remove it, or add a contact pair");
+  }
   tie_pairs_.clear();
   for (const auto& tie : conditions_.ties) {
     tie_pairs_.push_back(pair_tied_nodes(tie, mesh, deck, context.path + "/Ties/" + tie.name));
@@ -78,7 +103,7 @@ void StaticsStep::run(StepContext& context) {
   start_phase();
   Progress assembly_progress =
       context.progress("stiffness assembly", dofs.partition().n_local_elements());
-  assemble_elastic_stiffness(stiffness, *materials_, &assembly_progress);
+  assemble_elastic_stiffness(stiffness, *materials_, &assembly_progress, one_point_kappa_);
   assembly_progress.finish();
   const double assembly_seconds = clock.seconds();
 
@@ -96,20 +121,43 @@ void StaticsStep::run(StepContext& context) {
   TpetraVector original_forces(*forces, Teuchos::Copy);
   LinearConstraints constraints(dofs, context.source());
   add_solid_constraints(conditions_, tie_pairs_, dofs, constraints);
-  const auto system = constraints.apply(stiffness.matrix(), *forces);
   const double load_seconds = clock.seconds();
 
   const auto solver = create_linear_solver(parameters_->sublist("Linear solver"));
   auto u = Teuchos::rcp(new TpetraVector(dofs.owned_map()));
   comm.barrier();
-  Progress setup_progress = context.progress("solver set-up", 1);
-  solver->setup(system, elasticity_traits(dofs));
-  setup_progress.finish();
-  Progress solve_progress = context.progress("linear solve", 1);
-  solver->report_progress_to(&solve_progress);
-  const SolveReport report = solver->solve(*forces, *u);
-  solve_progress.finish();
-  constraints.recover(*u);
+  SolveReport report;
+  std::unique_ptr<ContactPairs> contact;
+  ContactNewtonReport newton;
+  if (contact_pairs_.empty()) {
+    const auto system = constraints.apply(stiffness.matrix(), *forces);
+    Progress setup_progress = context.progress("solver set-up", 1);
+    solver->setup(system, elasticity_traits(dofs));
+    setup_progress.finish();
+    Progress solve_progress = context.progress("linear solve", 1);
+    solver->report_progress_to(&solve_progress);
+    report = solver->solve(*forces, *u);
+    solve_progress.finish();
+    constraints.recover(*u);
+  } else {
+    contact = std::make_unique<ContactPairs>(contact_pairs_, dofs.partition(), *materials_,
+                                             context.source(), context.path);
+    // Masses only set the (unused) critical step; the penalty is the bulk-modulus form.
+    const std::vector<double> unit_mass(dofs.partition().n_owned_nodes(), 1.0);
+    std::vector<double> x(3 * static_cast<std::size_t>(dofs.partition().n_owned_nodes()));
+    for (LocalIndex node = 0; node < dofs.partition().n_owned_nodes(); ++node)
+      std::copy_n(dofs.partition().coordinates(node), 3, &x[3 * node]);
+    const std::vector<double> zero(x.size(), 0.0);
+    contact->initialise(unit_mass, 0, x.data(), zero.data());
+    const int max_iterations = parameters_->get<int>("Contact iterations");
+    Progress progress = context.progress("contact iterations", max_iterations);
+    newton = solve_with_contact(stiffness.matrix(), original_forces, constraints, *solver,
+                                elasticity_traits(dofs), *contact, dofs, max_iterations,
+                                parameters_->get<double>("Contact tolerance"), context.path, *u,
+                                progress);
+    progress.finish();
+    report = newton.solve;
+  }
   TpetraVector reactions(dofs.owned_map());
   constraints.reactions(*u, reactions);
 
@@ -120,7 +168,13 @@ void StaticsStep::run(StepContext& context) {
     imbalance += std::pow(applied[d] + reaction_sum[d], 2);
     scale = std::max({scale, std::abs(applied[d]), std::abs(reaction_sum[d])});
   }
-  const double strain_energy = 0.5 * (original_forces.dot(*u) + reactions.dot(*u));
+  // Without contact the work of loads and reactions; with it (K kept unmodified) ½ uᵀ K u.
+  double strain_energy = 0.5 * (original_forces.dot(*u) + reactions.dot(*u));
+  if (contact) {
+    TpetraVector ku(dofs.owned_map());
+    stiffness.matrix()->apply(*u, ku);
+    strain_energy = 0.5 * ku.dot(*u);
+  }
 
   const GlobalIndex n_elements = model.mesh().n_elements();
   summary.add(section, "degrees of freedom", static_cast<double>(dofs.n_global_dofs()));
@@ -132,6 +186,12 @@ void StaticsStep::run(StepContext& context) {
   summary.add(section, "relative residual", report.relative_residual);
   summary.add(section, "backward error", report.backward_error);
   summary.add(section, "strain energy", strain_energy, "J");
+  if (contact) {
+    summary.add(section, "contact pairs", static_cast<double>(contact_pairs_.size()));
+    summary.add(section, "contact iterations", newton.iterations);
+    summary.add(section, "contact out-of-balance force (relative)", newton.residual);
+    summary.add(section, "active slave nodes", static_cast<double>(newton.active));
+  }
   summary.add(section, "equilibrium error |applied + reactions| / max",
               scale > 0 ? std::sqrt(imbalance) / scale : 0.0);
   summary.add(section, "time: sparsity graph", graph_seconds, "s");
@@ -144,6 +204,8 @@ void StaticsStep::run(StepContext& context) {
 
   start_phase();
   write_results(context, dofs, *u, reactions);
+  if (contact)
+    write_contact(context, *contact);
   summary.add(section, "time: output", clock.seconds(), "s");
   model.set_field("displacement", u);
   model.set_field(context.step_name + "/displacement", u);
@@ -229,6 +291,18 @@ void StaticsStep::write_results(StepContext& context, const DofMap& dofs, const 
       root);
   writer.write_step(1.0, nodal, element);
   writer.close();
+}
+
+void StaticsStep::write_contact(StepContext& context, const ContactPairs& contact) const {
+  const bool root = context.model.comm().is_root();
+  for (const PenaltyContactPair& pair : contact.pairs()) {
+    const std::string stem = context.step_name + "_contact_" + pair.settings().name;
+    CsvWriter totals(context.output.staging_path(stem + ".csv"), contact_history_columns(), root);
+    totals.write_row(contact_history_row(0, pair));
+    CsvWriter patch(context.output.staging_path(stem + "_patch.csv"), contact_patch_columns(),
+                    root);
+    write_contact_patch(patch, 0, pair, contact);
+  }
 }
 
 }  // namespace railfe

@@ -7,11 +7,13 @@
 #include <vector>
 
 #include "framework/app/module.hpp"
+#include "physics/common/contact_settings.hpp"
 #include "physics/common/solid_conditions.hpp"
 #include "physics/materials/elastic_material.hpp"
 
 namespace railfe {
 
+class ContactPairs;
 class DofMap;
 class LinearConstraints;
 
@@ -26,11 +28,14 @@ class StaticsStep : public AnalysisStep {
  private:
   void write_results(StepContext& context, const DofMap& dofs, const TpetraVector& u,
                      const TpetraVector& reactions) const;
+  void write_contact(StepContext& context, const ContactPairs& contact) const;
 
   const Teuchos::ParameterList* parameters_;
   SolidConditions conditions_;
   std::optional<MaterialTable> materials_;
   std::vector<std::vector<std::pair<GlobalIndex, GlobalIndex>>> tie_pairs_;
+  std::vector<ContactPairSpec> contact_pairs_;
+  double one_point_kappa_ = -1;  // ≥ 0: the one-point hex8 with this hourglass coefficient
 };
 
 }  // namespace railfe

@@ -14,6 +14,7 @@
 #include "framework/base/error.hpp"
 #include "framework/mesh/box_generator.hpp"
 #include "framework/mesh/partition.hpp"
+#include "physics/elements/hex8_one_point.hpp"
 #include "physics/explicit/checkpoint.hpp"
 #include "physics/explicit/explicit_output.hpp"
 #include "physics/explicit/lanczos.hpp"
@@ -100,6 +101,53 @@ TEST(ExplicitKernel, OnePointPatchTestOnDistortedMesh) {
     EXPECT_NEAR(stress[0], sigma(0, 0), 1e-9 * std::abs(sigma(0, 0)));
     EXPECT_NEAR(stress[3], sigma(0, 1), 1e-9 * std::abs(sigma(0, 0)));
     EXPECT_NEAR(stress[5], sigma(2, 0), 1e-9 * std::abs(sigma(0, 0)));
+  }
+}
+
+// The statics one-point stiffness (hex8_one_point.hpp) must be the kernel's tangent, or a static
+// preload would not start an explicit run in equilibrium: on the distorted patch, K u equals the
+// central difference (f(u) − f(−u)) / 2 of the kernel's forces (the quadratic terms of St.
+// Venant–Kirchhoff cancel; the cubic ones are 1e-12 of the force at strains of 1e-6).
+TEST(ExplicitKernel, OnePointStiffnessIsTheKernelsTangent) {
+  Patch patch;
+  SolidKernelSettings settings;
+  settings.bulk_linear = settings.bulk_quadratic = 0;
+  settings.hourglass_coefficient = 0.05;
+  const SolidElements elements = build_solid_elements(*patch.partition, *patch.materials, settings);
+  const std::size_t n = patch.n_values();
+  std::vector<double> u(n), minus_u(n), v(n, 0.0), f_plus(n, 0.0), f_minus(n, 0.0);
+  for (std::size_t k = 0; k < n; ++k) {
+    u[k] = 1e-7 * std::sin(1.7 * static_cast<double>(k) + 0.3);  // no linear field: hourglass too
+    minus_u[k] = -u[k];
+  }
+  add_internal_forces(elements, settings, patch.x.data(), u.data(), v.data(), f_plus.data());
+  add_internal_forces(elements, settings, patch.x.data(), minus_u.data(), v.data(), f_minus.data());
+  std::vector<double> ku(n, 0.0);
+  const LameConstants lame = patch.materials->of_block(0).lame();
+  double hourglass_share = 0;
+  for (LocalIndex e = 0; e < elements.n_elements; ++e) {
+    const LocalIndex* nodes = &elements.nodes[8 * static_cast<std::size_t>(e)];
+    double x[8][3];
+    for (int a = 0; a < 8; ++a)
+      for (int d = 0; d < 3; ++d)
+        x[a][d] = patch.x[3 * nodes[a] + d];
+    double k_one_point[576], k_no_hourglass[576];
+    hex8_one_point_stiffness(x, lame, settings.hourglass_coefficient, k_one_point);
+    hex8_one_point_stiffness(x, lame, 0, k_no_hourglass);
+    for (int i = 0; i < 24; ++i)
+      for (int j = 0; j < 24; ++j) {
+        const double uj = u[3 * nodes[j / 3] + j % 3];
+        ku[3 * nodes[i / 3] + i % 3] += k_one_point[24 * i + j] * uj;
+        hourglass_share += std::abs((k_one_point[24 * i + j] - k_no_hourglass[24 * i + j]) * uj);
+      }
+  }
+  ASSERT_GT(hourglass_share, 0);  // the displacement excites the hourglass modes
+  double scale = 0;
+  for (double value : ku)
+    scale = std::max(scale, std::abs(value));
+  for (std::size_t k = 0; k < n; ++k) {
+    const double tangent = 0.5 * (f_plus[k] - f_minus[k]);
+    EXPECT_NEAR(tangent, ku[k], 1e-9 * scale) << "value " << k;
   }
 }
 

@@ -9,7 +9,7 @@
 
 #include "framework/base/types.hpp"
 #include "framework/mesh/mesh.hpp"
-#include "physics/explicit/contact_settings.hpp"
+#include "physics/common/contact_settings.hpp"
 
 namespace railfe {
 

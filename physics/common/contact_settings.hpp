@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// The Contact pairs of an explicit step: which surfaces touch, how stiff the penalty is, which
-/// friction law acts, how often the search is refreshed and when the patch is written.
+/// The Contact pairs of an explicit or statics step: which surfaces touch, how stiff the penalty
+/// is, which friction law acts, how often the search is refreshed and when the patch is written.
 
 #include <array>
 #include <string>
@@ -35,13 +35,18 @@ struct ContactPairSpec {
 /// What to do about a start penetration, for its messages.
 extern const char* const kPlacementAdvice;
 
-/// The valid parameters of one entry of Contact pairs.
-ParameterSpec contact_pair_parameters();
+/// Which kind of step a contact pair belongs to: a static solve has no time step (so no
+/// nodal-mass penalty, damping, search interval or patch times) and no friction yet.
+enum class ContactUse { explicit_dynamics, statics };
 
-/// Reads the validated Contact pairs sublist of an explicit step. Throws InputError naming
+/// The valid parameters of one entry of Contact pairs in a step of kind \p use.
+ParameterSpec contact_pair_parameters(ContactUse use);
+
+/// Reads the validated Contact pairs sublist of a step of kind \p use. Throws InputError naming
 /// \p deck and the parameter path for what the spec cannot express (μs < μd).
 std::vector<ContactPairSpec> read_contact_pairs(const Teuchos::ParameterList& step,
-                                                const std::string& deck, const std::string& path);
+                                                const std::string& deck, const std::string& path,
+                                                ContactUse use);
 
 /// Checks the pairs' sets against \p mesh: they exist, are not empty, slave and master share no
 /// node, no slave node starts deeper than the pair's Initial penetration limit (reference

@@ -1,4 +1,4 @@
-#include "physics/explicit/contact_surfaces.hpp"
+#include "physics/common/contact_surfaces.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,50 +1,62 @@
-#include "physics/explicit/contact_settings.hpp"
+#include "physics/common/contact_settings.hpp"
 
 #include <algorithm>
 
 #include <Teuchos_Array.hpp>
 
 #include "framework/base/error.hpp"
-#include "physics/explicit/contact_surfaces.hpp"
+#include "physics/common/contact_surfaces.hpp"
 
 namespace railfe {
 
 const char* const kPlacementAdvice =
     "bodies placed apart or touching at the start (move a part, or start from a statics step)";
 
-ParameterSpec contact_pair_parameters() {
+ParameterSpec contact_pair_parameters(ContactUse use) {
+  const bool dynamic = use == ContactUse::explicit_dynamics;
   ParameterSpec spec(
-      "A penalty node-to-segment contact pair: the slave nodes may not pass through the master "
-      "faces (docs/theory.md#penalty-contact). Give the slave nodes as a side set or a node set.");
+      dynamic ? "A penalty node-to-segment contact pair: the slave nodes may not pass through the "
+                "master faces (docs/theory.md#penalty-contact-explicit). Give the slave nodes as "
+                "a side set or a node set."
+              : "A frictionless penalty node-to-segment contact pair, solved by Newton "
+                "iterations on the active set (docs/theory.md#penalty-contact-in-statics); give "
+                "an explicit step that starts from this one the same pair. Give the slave nodes "
+                "as a side set or a node set.");
   spec.text("Slave side set", "", "Slave nodes: the nodes of these faces (the finer surface).");
   spec.text("Slave node set", "", "Slave nodes given directly (give this or Slave side set).");
   spec.required_text("Master side set", "Master faces (quadrilaterals, outward normals).");
-  spec.choice("Penalty stiffness", "bulk modulus",
-              {{"bulk modulus", "k = f K A^2 / V of the element under the master face"},
-               {"nodal mass",
-                "k = f m / dt^2, m the reduced mass of slave node and face, dt "
-                "the solids' step at the start"}},
-              "How the penalty stiffness is set.");
-  spec.real("Penalty factor", 0.1, "f of the penalty stiffness.", "", Range::open_closed(0, 100));
-  spec.real("Damping fraction", 0.0, "Normal contact damping as a fraction of critical.", "",
-            Range::closed(0, 1));
-  spec.choice("Friction", "none",
-              {{"none", "frictionless"},
-               {"coulomb", "Coulomb, constant Friction coefficient"},
-               {"velocity dependent", "mu = mu_d + (mu_s - mu_d) exp(-c |v_slip|)"}},
-              "Friction law.");
-  spec.real("Friction coefficient", 0.3, "Coulomb's mu.", "", Range::open_closed(0, 2));
-  spec.real("Static coefficient", 0.45, "mu_s.", "", Range::open_closed(0, 2));
-  spec.real("Dynamic coefficient", 0.3, "mu_d (at most mu_s).", "", Range::open_closed(0, 2));
-  spec.real("Decay", 0.0, "c of the exponential decay with slip speed.", "s/m",
-            Range::non_negative());
-  spec.only_when("Friction", {"coulomb"}, {"Friction coefficient"});
-  spec.only_when("Friction", {"velocity dependent"},
-                 {"Static coefficient", "Dynamic coefficient", "Decay"});
-  spec.integer("Search interval", 10,
-               "Steps between rebuilds of the bucket search (sooner when the surfaces move "
-               "further than the capture distance allows).",
-               Range::closed(1, 10000));
+  if (dynamic)
+    spec.choice("Penalty stiffness", "bulk modulus",
+                {{"bulk modulus", "k = f K A^2 / V of the element under the master face"},
+                 {"nodal mass",
+                  "k = f m / dt^2, m the reduced mass of slave node and face, dt "
+                  "the solids' step at the start"}},
+                "How the penalty stiffness is set.");
+  spec.real("Penalty factor", 0.1,
+            dynamic ? "f of the penalty stiffness."
+                    : "f of the penalty stiffness k = f K A^2 / V (bulk-modulus form).",
+            "", Range::open_closed(0, 100));
+  if (dynamic) {
+    spec.real("Damping fraction", 0.0, "Normal contact damping as a fraction of critical.", "",
+              Range::closed(0, 1));
+    spec.choice("Friction", "none",
+                {{"none", "frictionless"},
+                 {"coulomb", "Coulomb, constant Friction coefficient"},
+                 {"velocity dependent", "mu = mu_d + (mu_s - mu_d) exp(-c |v_slip|)"}},
+                "Friction law.");
+    spec.real("Friction coefficient", 0.3, "Coulomb's mu.", "", Range::open_closed(0, 2));
+    spec.real("Static coefficient", 0.45, "mu_s.", "", Range::open_closed(0, 2));
+    spec.real("Dynamic coefficient", 0.3, "mu_d (at most mu_s).", "", Range::open_closed(0, 2));
+    spec.real("Decay", 0.0, "c of the exponential decay with slip speed.", "s/m",
+              Range::non_negative());
+    spec.only_when("Friction", {"coulomb"}, {"Friction coefficient"});
+    spec.only_when("Friction", {"velocity dependent"},
+                   {"Static coefficient", "Dynamic coefficient", "Decay"});
+    spec.integer("Search interval", 10,
+                 "Steps between rebuilds of the bucket search (sooner when the surfaces move "
+                 "further than the capture distance allows).",
+                 Range::closed(1, 10000));
+  }
   spec.real("Search margin", 0.0,
             "Distance beyond the surfaces' motion within which faces are caught (0 = half the "
             "mean master face size).",
@@ -57,13 +69,16 @@ ParameterSpec contact_pair_parameters() {
             "The deepest penetration allowed at the start, as a fraction of the master face "
             "size; deeper starts are refused.",
             "", Range::open_closed(0, 1));
-  spec.real_array("Patch times", {},
-                  "Times at which the patch fields (pressure, shear, slip) are written.", "s");
+  if (dynamic)
+    spec.real_array("Patch times", {},
+                    "Times at which the patch fields (pressure, shear, slip) are written.", "s");
   return spec;
 }
 
 std::vector<ContactPairSpec> read_contact_pairs(const Teuchos::ParameterList& step,
-                                                const std::string& deck, const std::string& path) {
+                                                const std::string& deck, const std::string& path,
+                                                ContactUse use) {
+  const bool dynamic = use == ContactUse::explicit_dynamics;
   std::vector<ContactPairSpec> pairs;
   const auto& list = step.sublist("Contact pairs");
   for (auto it = list.begin(); it != list.end(); ++it) {
@@ -81,10 +96,13 @@ std::vector<ContactPairSpec> read_contact_pairs(const Teuchos::ParameterList& st
                                                       "node set",
                         "exactly one of Slave side set and Slave node set");
     pair.master_side_set = entry.get<std::string>("Master side set");
-    pair.mass_penalty = entry.get<std::string>("Penalty stiffness") == "nodal mass";
     pair.penalty_factor = entry.get<double>("Penalty factor");
-    pair.damping_fraction = entry.get<double>("Damping fraction");
-    const std::string law = entry.get<std::string>("Friction");
+    if (dynamic) {
+      pair.mass_penalty = entry.get<std::string>("Penalty stiffness") == "nodal mass";
+      pair.damping_fraction = entry.get<double>("Damping fraction");
+      pair.search_interval = entry.get<int>("Search interval");
+    }
+    const std::string law = dynamic ? entry.get<std::string>("Friction") : "none";
     if (law == "coulomb") {
       pair.friction.kind = FrictionLaw::Kind::coulomb;
       pair.friction.static_coefficient = entry.get<double>("Friction coefficient");
@@ -99,7 +117,6 @@ std::vector<ContactPairSpec> read_contact_pairs(const Teuchos::ParameterList& st
                               std::to_string(pair.friction.static_coefficient) + ")",
                           "mu_d <= mu_s: friction falls with slip speed");
     }
-    pair.search_interval = entry.get<int>("Search interval");
     pair.search_margin = entry.get<double>("Search margin");
     const auto& direction = entry.get<Teuchos::Array<double>>("Longitudinal direction");
     pair.longitudinal = {direction[0], direction[1], direction[2]};
@@ -107,8 +124,10 @@ std::vector<ContactPairSpec> read_contact_pairs(const Teuchos::ParameterList& st
       throw_input_error(deck, where + "/Longitudinal direction", "is the zero vector",
                         "a non-zero direction");
     pair.penetration_limit = entry.get<double>("Initial penetration limit");
-    const auto& times = entry.get<Teuchos::Array<double>>("Patch times");
-    pair.patch_times.assign(times.begin(), times.end());
+    if (dynamic) {
+      const auto& times = entry.get<Teuchos::Array<double>>("Patch times");
+      pair.patch_times.assign(times.begin(), times.end());
+    }
     if (!std::is_sorted(pair.patch_times.begin(), pair.patch_times.end()) ||
         std::any_of(pair.patch_times.begin(), pair.patch_times.end(),
                     [](double t) { return t < 0; }))

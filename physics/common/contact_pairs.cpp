@@ -1,4 +1,4 @@
-#include "physics/explicit/explicit_contact.hpp"
+#include "physics/common/contact_pairs.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -35,9 +35,9 @@ int surface_index(const std::vector<GlobalIndex>& surface, GlobalIndex node) {
 
 }  // namespace
 
-ExplicitContact::ExplicitContact(const std::vector<ContactPairSpec>& specs,
-                                 const MeshPartition& partition, const MaterialTable& materials,
-                                 const std::string& deck, const std::string& path)
+ContactPairs::ContactPairs(const std::vector<ContactPairSpec>& specs,
+                           const MeshPartition& partition, const MaterialTable& materials,
+                           const std::string& deck, const std::string& path)
     : specs_(specs), partition_(partition), materials_(materials), deck_(deck), path_(path) {
   for (const ContactPairSpec& spec : specs_) {
     surfaces_.push_back(contact_surface_nodes(spec, partition.mesh(), deck, path));
@@ -62,9 +62,9 @@ ExplicitContact::ExplicitContact(const std::vector<ContactPairSpec>& specs,
   touched_.assign(specs_.size(), false);
 }
 
-ExplicitContact::~ExplicitContact() = default;
+ContactPairs::~ContactPairs() = default;
 
-void ExplicitContact::share(const double* x, const double* u, const double* du) {
+void ContactPairs::share(const double* x, const double* u, const double* du) {
   std::fill(exchange_.begin(), exchange_.end(), 0.0);
   const std::size_t n = surface_.size();
   for (std::size_t i = 0; i < n; ++i) {
@@ -82,8 +82,8 @@ void ExplicitContact::share(const double* x, const double* u, const double* du) 
   std::copy_n(exchange_.begin() + 3 * static_cast<std::ptrdiff_t>(n), 3 * n, increments_.begin());
 }
 
-void ExplicitContact::initialise(const std::vector<double>& owned_mass, double solid_step,
-                                 const double* x, const double* u) {
+void ContactPairs::initialise(const std::vector<double>& owned_mass, double solid_step,
+                              const double* x, const double* u) {
   if (specs_.empty())
     return;
   const Mesh& mesh = partition_.mesh();
@@ -158,8 +158,8 @@ void ExplicitContact::initialise(const std::vector<double>& owned_mass, double s
   }
 }
 
-void ExplicitContact::add_forces(const double* x, const double* u, const double* du, double dt,
-                                 double* residual) {
+void ContactPairs::add_forces(const double* x, const double* u, const double* du, double dt,
+                              double* residual) {
   if (pairs_.empty())
     return;
   const Stopwatch clock;
@@ -188,14 +188,14 @@ void ExplicitContact::add_forces(const double* x, const double* u, const double*
   seconds_ += clock.seconds();
 }
 
-double ExplicitContact::stable_step() const {
+double ContactPairs::stable_step() const {
   double step = 1e300;
   for (const PenaltyContactPair& pair : pairs_)
     step = std::min(step, pair.stable_step());
   return step;
 }
 
-std::string ExplicitContact::critical_pair() const {
+std::string ContactPairs::critical_pair() const {
   std::string name;
   double step = 1e300;
   for (const PenaltyContactPair& pair : pairs_) {
@@ -207,21 +207,21 @@ std::string ExplicitContact::critical_pair() const {
   return name;
 }
 
-double ExplicitContact::stored_energy() const {
+double ContactPairs::stored_energy() const {
   double energy = 0;
   for (const PenaltyContactPair& pair : pairs_)
     energy += pair.totals().stored_energy;
   return energy;
 }
 
-double ExplicitContact::dissipated() const {
+double ContactPairs::dissipated() const {
   double energy = 0;
   for (const PenaltyContactPair& pair : pairs_)
     energy += pair.totals().dissipated;
   return energy;
 }
 
-std::vector<double> ExplicitContact::state() const {
+std::vector<double> ContactPairs::state() const {
   std::vector<double> values;
   for (const PenaltyContactPair& pair : pairs_) {
     const std::vector<double> pair_state = pair.state();
@@ -231,7 +231,7 @@ std::vector<double> ExplicitContact::state() const {
   return values;
 }
 
-bool ExplicitContact::restore(const std::vector<double>& values) {
+bool ContactPairs::restore(const std::vector<double>& values) {
   std::size_t at = 0;
   for (PenaltyContactPair& pair : pairs_) {
     if (at >= values.size())

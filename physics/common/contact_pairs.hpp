@@ -1,7 +1,8 @@
 #pragma once
 /// \file
-/// The contact pairs of an explicit run. Every rank holds every pair's surfaces: each step the
-/// owners of the surface nodes share their positions and increments (one sum over ranks of
+/// The penalty contact pairs of a step (explicit dynamics, or the Newton iterations of statics).
+/// Every rank holds every pair's surfaces: each evaluation the owners of the surface nodes share
+/// their positions and increments (one sum over ranks of
 /// 6 numbers per surface node), every rank evaluates every pair the same way, and each rank adds
 /// the forces of the nodes it owns. So no contact force is lost or counted twice at a rank
 /// boundary, and the friction history is the same on every rank. The cost is the surface's, not
@@ -12,29 +13,30 @@
 
 #include "contact/enforcement/penalty_contact_pair.hpp"
 #include "framework/base/types.hpp"
-#include "physics/explicit/contact_settings.hpp"
-#include "physics/explicit/contact_surfaces.hpp"
+#include "physics/common/contact_settings.hpp"
+#include "physics/common/contact_surfaces.hpp"
 
 namespace railfe {
 
 class MaterialTable;
 class MeshPartition;
 
-/// All contact pairs of one explicit step.
-class ExplicitContact {
+/// All contact pairs of one step.
+class ContactPairs {
  public:
   /// Reads the pairs' surfaces off the mesh (every rank). Throws InputError naming \p deck and
   /// \p path for a node that is both slave and master.
-  ExplicitContact(const std::vector<ContactPairSpec>& specs, const MeshPartition& partition,
-                  const MaterialTable& materials, const std::string& deck, const std::string& path);
-  ~ExplicitContact();
+  ContactPairs(const std::vector<ContactPairSpec>& specs, const MeshPartition& partition,
+               const MaterialTable& materials, const std::string& deck, const std::string& path);
+  ~ContactPairs();
 
   /// Whether the step has contact pairs.
   bool empty() const { return pairs_.empty(); }
-  /// Sets the penalty stiffnesses from \p owned_mass (per owned node) and \p solid_step (the
-  /// solids' step, for the nodal-mass form), finds the contact points at the start (reference
-  /// \p x plus \p u, local arrays) and refuses a start penetration deeper than the pair's limit
-  /// (InputError naming the node and its position). Collective.
+  /// Sets the penalty stiffnesses from \p owned_mass (per owned node; it sets the critical step)
+  /// and \p solid_step (the solids' step, for the nodal-mass form; unused by statics), and
+  /// refuses a start (reference \p x plus \p u, local arrays) deeper than the pair's limit: a
+  /// RunError naming the node and its position, which only a preload can cause, since check time
+  /// refuses such reference positions. Collective.
   void initialise(const std::vector<double>& owned_mass, double solid_step, const double* x,
                   const double* u);
   /// Adds the contact forces at the state (\p x + \p u, step increments \p du of owned nodes,
