@@ -58,6 +58,8 @@ class ContactPairs {
   const std::vector<ContactPairSpec>& specs() const { return specs_; }
   /// Global node number of surface node \p i.
   GlobalIndex surface_node(int i) const { return surface_[i]; }
+  /// Local index of surface node \p i on this rank, −1 where another rank owns it.
+  LocalIndex owned_node(int i) const { return owned_[i]; }
   /// Whether pair \p p has had a node in contact since the start.
   bool ever_touched(std::size_t p) const { return touched_[p]; }
   /// Friction histories and dissipated work, for checkpoints.

@@ -69,9 +69,14 @@ ParameterSpec contact_pair_parameters(ContactUse use) {
             "The deepest penetration allowed at the start, as a fraction of the master face "
             "size; deeper starts are refused.",
             "", Range::open_closed(0, 1));
-  if (dynamic)
+  if (dynamic) {
     spec.real_array("Patch times", {},
                     "Times at which the patch fields (pressure, shear, slip) are written.", "s");
+    spec.flag("Patch charts", true,
+              "Draw each patch as <step>_contact_<pair>_patch_<k>.png: pressure as colour with "
+              "shear arrows, and micro-slip arrows over the stick and slip areas (needs python3 "
+              "with matplotlib).");
+  }
   return spec;
 }
 
@@ -127,6 +132,7 @@ std::vector<ContactPairSpec> read_contact_pairs(const Teuchos::ParameterList& st
     if (dynamic) {
       const auto& times = entry.get<Teuchos::Array<double>>("Patch times");
       pair.patch_times.assign(times.begin(), times.end());
+      pair.patch_charts = entry.get<bool>("Patch charts");
     }
     if (!std::is_sorted(pair.patch_times.begin(), pair.patch_times.end()) ||
         std::any_of(pair.patch_times.begin(), pair.patch_times.end(),

@@ -30,6 +30,7 @@ struct ContactPairSpec {
   std::array<double, 3> longitudinal{1, 0, 0};  ///< t₁ of the results' frame
   double penetration_limit = 0.1;   ///< deepest start penetration, fraction of the face size
   std::vector<double> patch_times;  ///< times at which patch fields are written (s)
+  bool patch_charts = true;         ///< draw each patch as a PNG map
 };
 
 /// What to do about a start penetration, for its messages.

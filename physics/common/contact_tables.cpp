@@ -1,5 +1,6 @@
 #include "physics/common/contact_tables.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -110,6 +111,35 @@ void write_contact_patch(CsvWriter& file, double time, const PenaltyContactPair&
         dot(slave.tangential_force, frame[1]) / area, dot(slave.tangential_force, frame[2]) / area,
         dot(slave.slip_velocity, frame[1]), dot(slave.slip_velocity, frame[2]),
         slave.slipping ? 1.0 : 0.0, slave.gap});
+  }
+}
+
+const std::vector<std::string>& contact_nodal_field_names() {
+  static const std::vector<std::string> names = {
+      "contact_pressure",        "contact_shear_x",         "contact_shear_y",
+      "contact_shear_z",         "contact_slip_velocity_x", "contact_slip_velocity_y",
+      "contact_slip_velocity_z", "contact_status"};
+  return names;
+}
+
+void add_contact_nodal_fields(const ContactPairs& contact, std::vector<double>& values, int width,
+                              int offset) {
+  for (const PenaltyContactPair& pair : contact.pairs()) {
+    const auto& geometry = pair.geometry();
+    for (std::size_t s = 0; s < pair.slaves().size(); ++s) {
+      const SlaveContact& slave = pair.slaves()[s];
+      const LocalIndex node = contact.owned_node(geometry.slave_nodes[s]);
+      if (slave.face < 0 || node < 0)
+        continue;
+      double* row = &values[static_cast<std::size_t>(node) * width + offset];
+      const double area = geometry.slave_area[s];
+      row[0] += slave.normal_force / area;
+      for (int d = 0; d < 3; ++d) {
+        row[1 + d] += slave.tangential_force[d] / area;
+        row[4 + d] += slave.slip_velocity[d];
+      }
+      row[7] = std::max(row[7], slave.slipping ? 2.0 : 1.0);
+    }
   }
 }
 

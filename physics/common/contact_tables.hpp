@@ -29,4 +29,15 @@ const std::vector<std::string>& contact_patch_columns();
 void write_contact_patch(CsvWriter& file, double time, const PenaltyContactPair& pair,
                          const ContactPairs& contact);
 
+/// Names of the contact's nodal fields in Exodus snapshots: pressure (Pa), shear traction x, y,
+/// z (Pa), slip velocity x, y, z (m/s) and status (0 open, 1 stick, 2 slip), all on slave nodes
+/// and 0 elsewhere.
+const std::vector<std::string>& contact_nodal_field_names();
+
+/// Adds the nodal fields of every pair of \p contact at its last evaluation to \p values, which
+/// holds \p width numbers per owned node with the contact's fields from \p offset on. A node that
+/// is a slave of several pairs sums their tractions and keeps the larger status.
+void add_contact_nodal_fields(const ContactPairs& contact, std::vector<double>& values, int width,
+                              int offset);
+
 }  // namespace railfe

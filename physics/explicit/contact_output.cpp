@@ -16,12 +16,15 @@ ContactRecorder::ContactRecorder(const ExplicitSettings& settings, const Explici
     histories_.push_back(std::make_unique<CsvWriter>(
         output.staging_path(step_name + "_contact_" + pair.name + ".csv"),
         contact_history_columns(), root_));
-    // Registered now so that no other step can claim the names, written when their time comes.
-    for (std::size_t k = 0; k < pair.patch_times.size(); ++k)
-      output.staging_path(step_name + "_contact_" + pair.name + "_patch_" + std::to_string(k + 1) +
-                          ".csv");
   }
   rows_.resize(settings.contact_pairs.size());
+  // Registered now so that no other step can claim the names, written when their time comes.
+  for (std::size_t p = 0; p < settings.contact_pairs.size(); ++p)
+    for (std::size_t k = 0; k < settings.contact_pairs[p].patch_times.size(); ++k) {
+      output.staging_path(patch_name(p, k, ".csv"));
+      if (settings.contact_pairs[p].patch_charts)
+        output.staging_path(patch_name(p, k, ".png"));
+    }
   next_patch_.assign(settings.contact_pairs.size(), 0);
 }
 
@@ -54,13 +57,27 @@ void ContactRecorder::record(bool force_row) {
   }
 }
 
+std::string ContactRecorder::patch_name(std::size_t p, std::size_t index,
+                                        const char* extension) const {
+  return step_name_ + "_contact_" + settings_.contact_pairs[p].name + "_patch_" +
+         std::to_string(index + 1) + extension;
+}
+
 void ContactRecorder::write_patch(std::size_t p, std::size_t index) {
   const ContactPairs& contact = solver_.contact();
-  const PenaltyContactPair& pair = contact.pairs()[p];
-  const std::string name = step_name_ + "_contact_" + pair.settings().name + "_patch_" +
-                           std::to_string(index + 1) + ".csv";
-  CsvWriter patch(output_.staging_path(name), contact_patch_columns(), root_);
-  write_contact_patch(patch, solver_.time(), pair, contact);
+  CsvWriter patch(output_.staging_path(patch_name(p, index, ".csv")), contact_patch_columns(),
+                  root_);
+  write_contact_patch(patch, solver_.time(), contact.pairs()[p], contact);
+}
+
+std::vector<std::array<std::string, 2>> ContactRecorder::patch_charts() const {
+  std::vector<std::array<std::string, 2>> charts;
+  for (std::size_t p = 0; p < next_patch_.size(); ++p)
+    if (settings_.contact_pairs[p].patch_charts)
+      for (std::size_t k = 0; k < next_patch_[p]; ++k)
+        charts.push_back({output_.staging_path(patch_name(p, k, ".csv")),
+                          output_.staging_path(patch_name(p, k, ".png"))});
+  return charts;
 }
 
 std::vector<std::string> ContactRecorder::untouched_pairs() const {

@@ -30,6 +30,9 @@ class ContactRecorder {
   /// Writes a history row when \p force_row or the step is due, and the patch fields whose time
   /// has come.
   void record(bool force_row);
+  /// Staging paths of the patch files written so far and of their charts, for pairs that ask for
+  /// charts: {csv, png} each.
+  std::vector<std::array<std::string, 2>> patch_charts() const;
   /// Names of the pairs that never touched (for a warning).
   std::vector<std::string> untouched_pairs() const;
   /// Rows written so far and the next patch, for checkpoints.
@@ -39,6 +42,7 @@ class ContactRecorder {
 
  private:
   void write_patch(std::size_t pair, std::size_t index);
+  std::string patch_name(std::size_t pair, std::size_t index, const char* extension) const;
 
   const ExplicitSettings& settings_;
   const ExplicitSolver& solver_;

@@ -8,6 +8,8 @@
 #include "framework/output/exodus_writer.hpp"
 #include "framework/output/field_gather.hpp"
 #include "framework/output/output_directory.hpp"
+#include "physics/common/contact_pairs.hpp"
+#include "physics/common/contact_tables.hpp"
 #include "physics/explicit/contact_output.hpp"
 #include "physics/explicit/explicit_solver.hpp"
 #include "physics/explicit/nodal_conditions.hpp"
@@ -110,11 +112,14 @@ ExplicitRecorder::ExplicitRecorder(const ExplicitSettings& settings, const Expli
   contact_ = std::make_unique<ContactRecorder>(settings, solver, output, step_name, root_);
   wave_speeds_path_ = output.staging_path(step_name + "_wave_speeds.csv");
   if (write_exodus) {
+    std::vector<std::string> nodal_names{"displacement_x", "displacement_y", "displacement_z",
+                                         "velocity_x",     "velocity_y",     "velocity_z",
+                                         "acceleration_x", "acceleration_y", "acceleration_z"};
+    if (!solver.contact().empty())
+      for (const std::string& name : contact_nodal_field_names())
+        nodal_names.push_back(name);
     exodus_ = std::make_unique<ExodusWriter>(
-        output.staging_path(step_name + ".exo"), mesh, title,
-        std::vector<std::string>{"displacement_x", "displacement_y", "displacement_z", "velocity_x",
-                                 "velocity_y", "velocity_z", "acceleration_x", "acceleration_y",
-                                 "acceleration_z"},
+        output.staging_path(step_name + ".exo"), mesh, title, nodal_names,
         std::vector<std::string>{"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz",
                                  "stress_zx", "von_mises"},
         root_);
@@ -247,16 +252,20 @@ void ExplicitRecorder::snapshot(bool last) {
   const double time = solver_.time();
   if (!last && time + 1e-12 * std::max(time, 1e-30) < next_snapshot_)
     return;
-  const LocalIndex n_owned = partition_.n_owned_nodes();
-  std::vector<double> nodal_values;
-  nodal_values.reserve(9 * static_cast<std::size_t>(n_owned));
-  for (LocalIndex node = 0; node < n_owned; ++node) {
+  const auto n_owned = static_cast<std::size_t>(partition_.n_owned_nodes());
+  const bool contact = !solver_.contact().empty();
+  const int width = contact ? 9 + static_cast<int>(contact_nodal_field_names().size()) : 9;
+  std::vector<double> nodal_values(width * n_owned, 0.0);
+  for (std::size_t node = 0; node < n_owned; ++node) {
+    int column = 0;
     for (const auto* field :
          {&solver_.displacement(), &solver_.velocity(), &solver_.acceleration()})
       for (int d = 0; d < 3; ++d)
-        nodal_values.push_back((*field)[3 * static_cast<std::size_t>(node) + d]);
+        nodal_values[width * node + column++] = (*field)[3 * node + d];
   }
-  const auto nodal = gather_node_field(partition_, nodal_values, 9);
+  if (contact)
+    add_contact_nodal_fields(solver_.contact(), nodal_values, width, 9);
+  const auto nodal = gather_node_field(partition_, nodal_values, width);
   const SolidElements& elements = solver_.elements();
   std::vector<double> element_values(7 * static_cast<std::size_t>(partition_.n_local_elements()),
                                      0.0);

@@ -9,6 +9,7 @@
 #include "framework/assembly/dof_map.hpp"
 #include "framework/base/error.hpp"
 #include "framework/base/resources.hpp"
+#include "physics/common/chart_script.hpp"
 #include "physics/common/contact_pairs.hpp"
 #include "physics/explicit/checkpoint.hpp"
 #include "physics/explicit/contact_output.hpp"
@@ -296,6 +297,8 @@ void ExplicitStep::run(StepContext& context) {
     summary.add(section, "contact pairs", static_cast<double>(settings.contact_pairs.size()));
     summary.add(section, "solids' stable step at end", solver.solid_stable_step(), "s");
     summary.add(section, "contact critical step", solver.contact_stable_step(), "s");
+    for (const auto& [csv, png] : recorder.contact().patch_charts())
+      draw_chart(context, section, "contact_patch_map.py", {csv, png});
     for (const std::string& name : recorder.contact().untouched_pairs()) {
       const std::string warning = "contact pair '" + name +
                                   "' never touched: its surfaces did not come within reach "

@@ -203,7 +203,7 @@ void StaticsStep::run(StepContext& context) {
   summary.add(section, "time: solve", report.solve_seconds, "s");
 
   start_phase();
-  write_results(context, dofs, *u, reactions);
+  write_results(context, dofs, *u, reactions, contact.get());
   if (contact)
     write_contact(context, *contact);
   summary.add(section, "time: output", clock.seconds(), "s");
@@ -212,7 +212,7 @@ void StaticsStep::run(StepContext& context) {
 }
 
 void StaticsStep::write_results(StepContext& context, const DofMap& dofs, const TpetraVector& u,
-                                const TpetraVector& reactions) const {
+                                const TpetraVector& reactions, const ContactPairs* contact) const {
   const MeshPartition& partition = dofs.partition();
   const Mesh& mesh = partition.mesh();
   const Communicator& comm = partition.comm();
@@ -275,18 +275,27 @@ void StaticsStep::write_results(StepContext& context, const DofMap& dofs, const 
         3 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5]));
     element_values.push_back(von_mises);
   }
-  std::vector<double> owned_u(u_data.begin(), u_data.begin() + 3 * n_owned);
-  std::vector<double> owned_r(r_data.begin(), r_data.begin() + 3 * n_owned);
-  auto nodal = gather_node_field(partition, owned_u, 3);
-  auto nodal_reactions = gather_node_field(partition, owned_r, 3);
-  nodal.insert(nodal.end(), nodal_reactions.begin(), nodal_reactions.end());
+  std::vector<std::string> nodal_names{"displacement_x", "displacement_y", "displacement_z",
+                                       "reaction_x",     "reaction_y",     "reaction_z"};
+  const int contact_width = contact ? static_cast<int>(contact_nodal_field_names().size()) : 0;
+  const int width = 6 + contact_width;
+  std::vector<double> owned(static_cast<std::size_t>(width) * n_owned, 0.0);
+  for (std::size_t node = 0; node < static_cast<std::size_t>(n_owned); ++node)
+    for (int d = 0; d < 3; ++d) {
+      owned[width * node + d] = u_data[3 * node + d];
+      owned[width * node + 3 + d] = r_data[3 * node + d];
+    }
+  if (contact) {
+    add_contact_nodal_fields(*contact, owned, width, 6);
+    nodal_names.insert(nodal_names.end(), contact_nodal_field_names().begin(),
+                       contact_nodal_field_names().end());
+  }
+  const auto nodal = gather_node_field(partition, owned, width);
   const auto element = gather_element_field(partition, element_values, 7);
 
   ExodusWriter writer(
       context.output.staging_path(name + ".exo"), mesh,
-      context.model.deck().parameters->get<std::string>("Title"),
-      {"displacement_x", "displacement_y", "displacement_z", "reaction_x", "reaction_y",
-       "reaction_z"},
+      context.model.deck().parameters->get<std::string>("Title"), nodal_names,
       {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_zx", "von_mises"},
       root);
   writer.write_step(1.0, nodal, element);

@@ -27,7 +27,7 @@ class StaticsStep : public AnalysisStep {
 
  private:
   void write_results(StepContext& context, const DofMap& dofs, const TpetraVector& u,
-                     const TpetraVector& reactions) const;
+                     const TpetraVector& reactions, const ContactPairs* contact) const;
   void write_contact(StepContext& context, const ContactPairs& contact) const;
 
   const Teuchos::ParameterList* parameters_;
