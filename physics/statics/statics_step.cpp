@@ -168,6 +168,11 @@ void StaticsStep::run(StepContext& context) {
     imbalance += std::pow(applied[d] + reaction_sum[d], 2);
     scale = std::max({scale, std::abs(applied[d]), std::abs(reaction_sum[d])});
   }
+  // Contact forces are internal: with them the reactions may cancel alone (a body pressed on
+  // another between two held faces), and the error is measured against the contact force.
+  if (contact)
+    for (const PenaltyContactPair& pair : contact->pairs())
+      scale = std::max(scale, std::abs(pair.totals().normal_force));
   // Without contact the work of loads and reactions; with it (K kept unmodified) ½ uᵀ K u.
   double strain_energy = 0.5 * (original_forces.dot(*u) + reactions.dot(*u));
   if (contact) {
