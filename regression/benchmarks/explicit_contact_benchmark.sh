@@ -2,7 +2,8 @@
 # The cost of explicit penalty contact (issue 15, "Benchmark"): a wheel box pressed on a rail box,
 # the slave face 10 % of the nodes, at 3 sizes (about 1e4, 3e4 and 1e5 slave nodes), each run
 # with and without the contact pair back to back, 3 times; medians
-# (regression/benchmarks/explicit_contact_benchmark.py, docs/data/explicit_contact_benchmark.csv).
+# (regression/benchmarks/explicit_contact_benchmark.py, docs/data/explicit_contact_benchmark.csv);
+# then the wheel of Mesh Type wheel on a rail box at 3 element sizes (..._wheel.csv).
 # Then the allocation check: the smallest model run for about 50 and 150 steps under
 # malloc_count.so (LD_PRELOAD; counts malloc, calloc, realloc and aligned allocations); the
 # difference of the counts over the difference of the steps is the allocations per step.
@@ -16,6 +17,10 @@ work=${TMPDIR:-/tmp}/explicit_contact_benchmark
 mkdir -p "$work"
 nice /usr/bin/python3 "$root/regression/benchmarks/explicit_contact_benchmark.py" --railfe "$railfe" \
   --work "$work" "$@"
+# The realistic case: a wheel (Mesh Type wheel) whose tread is mostly far from the rail.
+nice /usr/bin/python3 "$root/regression/benchmarks/explicit_contact_benchmark.py" --railfe "$railfe" \
+  --work "$work" --wheel 0.02 0.012 0.008 --steps 100 60 30 \
+  --csv "$root/docs/data/explicit_contact_benchmark_wheel.csv"
 
 cc -O2 -shared -fPIC -o "$work/malloc_count.so" "$root/regression/benchmarks/malloc_count.c"
 /usr/bin/python3 - "$root" "$work" <<'PY'
