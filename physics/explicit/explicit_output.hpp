@@ -62,6 +62,8 @@ class ExplicitRecorder {
   /// Stored and dissipated energy over the energy put in (initial energy and work of the loads),
   /// last row: about 1 while the balance holds.
   double energy_growth() const { return growth_; }
+  /// The energy put in: initial energy plus the largest |work of the loads| so far (J).
+  double energy_put_in() const { return energy_put_in_; }
   /// Whether the last judged step was above the stable limit (then the error alone fails).
   bool beyond_stable_step() const { return beyond_stable_step_; }
   /// Writes an Exodus snapshot if one is due at the current time (collective); \p last forces it.
