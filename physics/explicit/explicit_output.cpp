@@ -195,13 +195,16 @@ bool ExplicitRecorder::record(bool force_rows) {
     // The first steps after an impulsive start (a velocity jump at t = 0) carry an O(1)
     // relative error on tiny energies; real divergence takes longer to show.
     const bool judged = step >= kSettlingSteps;
-    // Blow-up is exponential growth of the stored energy far past what the loads and the start
-    // put in; a stable step only oscillates the measured energy (a bounded error), which must
-    // not stop a correct run.
+    // Blow-up is exponential growth of the energy far past what the loads and the start put in;
+    // a stable step only oscillates the measured energy (a bounded error), which must not stop
+    // a correct run. The energy dissipated counts with the stored: an instability that dampers
+    // (Rayleigh, contact damping, friction) eat as fast as it creates energy never grows the
+    // stored energy, yet creates hundreds of times the work of the loads.
     energy_put_in_ =
         std::max(energy_put_in_, std::abs(solver_.initial_energy()) + std::abs(b.external_work));
-    const double stored = b.kinetic + b.internal + b.hourglass + b.contact;
-    growth_ = stored / std::max(energy_put_in_, 1e-300);
+    const double created =
+        b.kinetic + b.internal + b.hourglass + b.contact + b.damping + b.friction;
+    growth_ = created / std::max(energy_put_in_, 1e-300);
     // A step above the stable limit (Allow unstable step) has no bounded oscillation to excuse
     // the error: there the error alone fails. Penalty contact beyond its critical step throws
     // nodes off with energy it created instead of growing exponentially.

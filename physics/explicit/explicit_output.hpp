@@ -53,14 +53,17 @@ class ExplicitRecorder {
   ~ExplicitRecorder();
   /// Samples histories at the solver's current state and writes the rows that are due
   /// (collective). Returns false, writing nothing, when a value is not finite or the run blows
-  /// up: the energy error exceeds its limit and the stored energy has grown past the growth
-  /// limit times the energy put in, or the error exceeds its limit at a step above the stable
-  /// limit (the run must stop).
+  /// up: the energy error exceeds its limit and the stored and dissipated energy has grown past
+  /// the growth limit times the energy put in, or the error exceeds its limit at a step above the
+  /// stable limit (the run must stop).
   bool record(bool force_rows);
   /// The energy balance at the last energy row.
   const EnergyBalance& last_balance() const;
-  /// Stored energy over the energy put in (initial energy and work of the loads), last row.
+  /// Stored and dissipated energy over the energy put in (initial energy and work of the loads),
+  /// last row: about 1 while the balance holds.
   double energy_growth() const { return growth_; }
+  /// The energy put in: initial energy plus the largest |work of the loads| so far (J).
+  double energy_put_in() const { return energy_put_in_; }
   /// Whether the last judged step was above the stable limit (then the error alone fails).
   bool beyond_stable_step() const { return beyond_stable_step_; }
   /// Writes an Exodus snapshot if one is due at the current time (collective); \p last forces it.
@@ -95,7 +98,7 @@ class ExplicitRecorder {
   double next_snapshot_ = 0;
   double energy_put_in_ = 0;  // initial energy + largest |work of the loads| so far
   bool beyond_stable_step_ = false;
-  double growth_ = 0;  // stored energy / energy_put_in_ at the last energy row
+  double growth_ = 0;  // stored + dissipated energy / energy_put_in_ at the last energy row
   long long last_energy_step_ = -1, last_history_step_ = -1;
   bool root_;
 };

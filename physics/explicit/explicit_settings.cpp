@@ -164,8 +164,9 @@ ParameterSpec explicit_parameters() {
             "so the error alone never stops a run.",
             "", Range::positive());
   spec.real("Energy growth limit", 100,
-            "Blow-up detection, second condition: the stored energy (kinetic, strain, hourglass) "
-            "above this multiple of the energy put in (initial energy plus the largest work of "
+            "Blow-up detection, second condition: the stored energy (kinetic, strain, hourglass, "
+            "contact) plus the energy dissipated (damping, friction) above this multiple of the "
+            "energy put in (initial energy plus the largest work of "
             "the loads so far). A run stops only when both conditions hold.",
             "", Range::open(1, 1e300));
   spec.real("Rayleigh mass damping", 0.0, "alpha of C = alpha M.", "1/s", Range::non_negative());

@@ -121,7 +121,7 @@ struct ExplicitSettings {
   double safety_factor = 0.9;             ///< automatic step = factor × stable step
   bool allow_unstable_step = false;       ///< run a fixed step above the stable limit
   double energy_error_limit = 0.1;        ///< blow-up: |energy error| above it, and...
-  double energy_growth_limit = 100;       ///< ...stored energy above this x the energy put in
+  double energy_growth_limit = 100;       ///< ...stored + dissipated above this x the put in
   double rayleigh_mass = 0;               ///< α of C = α M (1/s)
   SolidKernelSettings kernel;             ///< hex8 formulation
   std::string start_from;                 ///< a previous step whose displacement starts this one
