@@ -36,6 +36,46 @@ Vector face_normal(const std::array<const double*, 4>& c, double xi, double eta)
   return n;
 }
 
+// Whether another of the \p candidates faces holds both nodes \p a and \p b (their edge is shared).
+bool edge_shared(const std::vector<std::array<int, 4>>& faces, const std::vector<int>& candidates,
+                 int face, int a, int b) {
+  for (int f : candidates) {
+    if (f == face)
+      continue;
+    const auto& nodes = faces[f];
+    if (std::find(nodes.begin(), nodes.end(), a) != nodes.end() &&
+        std::find(nodes.begin(), nodes.end(), b) != nodes.end())
+      return true;
+  }
+  return false;
+}
+
+// Whether the in-plane \p offset of a node from its nearest point (xi, eta) on the boundary of
+// face \p face leaves the face by more than \p tolerance across an edge no candidate shares.
+bool crosses_free_edge(const std::vector<std::array<int, 4>>& faces,
+                       const std::vector<int>& candidates, int face,
+                       const std::array<const double*, 4>& c, double xi, double eta,
+                       const Vector& offset, double tolerance) {
+  Vector dxi{}, deta{};
+  for (int d = 0; d < 3; ++d) {
+    dxi[d] = (1 - eta) * (c[1][d] - c[0][d]) + (1 + eta) * (c[2][d] - c[3][d]);
+    deta[d] = (1 - xi) * (c[3][d] - c[0][d]) + (1 + xi) * (c[2][d] - c[1][d]);
+  }
+  const double across_xi = dot(offset, dxi) / norm(dxi);
+  const double across_eta = dot(offset, deta) / norm(deta);
+  const auto& n = faces[face];
+  const double end = 1 - 1e-12;
+  // Edges: ξ = +1 (nodes 1, 2), ξ = −1 (0, 3), η = +1 (3, 2), η = −1 (0, 1).
+  return (xi >= end && across_xi > tolerance &&
+          !edge_shared(faces, candidates, face, n[1], n[2])) ||
+         (xi <= -end && -across_xi > tolerance &&
+          !edge_shared(faces, candidates, face, n[0], n[3])) ||
+         (eta >= end && across_eta > tolerance &&
+          !edge_shared(faces, candidates, face, n[3], n[2])) ||
+         (eta <= -end && -across_eta > tolerance &&
+          !edge_shared(faces, candidates, face, n[0], n[1]));
+}
+
 }  // namespace
 
 PenaltyContactPair::PenaltyContactPair(PenaltyPairGeometry geometry, PenaltyPairSettings settings)
@@ -86,7 +126,10 @@ void PenaltyContactPair::contact_point(int slave, const double* x) {
   const std::array<const double*, 4> corners = {x + 3 * nodes[0], x + 3 * nodes[1],
                                                 x + 3 * nodes[2], x + 3 * nodes[3]};
   // A node behind the plane of a face whose nearest point is on the surface's rim is beside
-  // the surface, not in it (a block past the end of a plate): it gets no force.
+  // the surface, not in it (a block past the end of a plate): it gets no force. Only an offset
+  // across a free edge counts: across an edge shared with another face the node is still under
+  // the surface (in the valley between two faces, also when it lies on the rim, as the nodes
+  // of a one-layer plane-strain slab do).
   if (found.projection.on_boundary) {
     const Vector n = face_normal(corners, found.projection.xi, found.projection.eta);
     Vector offset{};
@@ -95,7 +138,9 @@ void PenaltyContactPair::contact_point(int slave, const double* x) {
     const double along = dot(offset, n);
     for (int d = 0; d < 3; ++d)
       offset[d] -= along * n[d];
-    if (norm(offset) > 1e-3 * std::abs(found.projection.gap) + 1e-12)
+    if (crosses_free_edge(geometry_.master_faces, scratch_, found.face, corners,
+                          found.projection.xi, found.projection.eta, offset,
+                          1e-3 * std::abs(found.projection.gap) + 1e-12))
       return;
   }
   contact.face = found.face;

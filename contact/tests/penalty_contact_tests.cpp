@@ -128,5 +128,50 @@ TEST(PenaltyContact, DampingNeverPullsTheSurfacesTogether) {
   EXPECT_NEAR(force[14], 0, 1e-12);
 }
 
+// A node behind the plane of the face but past its free edge (a block past the end of a plate)
+// is beside the surface: no force, also at the corner.
+TEST(PenaltyContact, NodePastAFreeEdgeFeelsNothing) {
+  PenaltyContactPair pair = one_face_pair();
+  for (const auto& where : {std::array<double, 2>{1.001, 0.5}, std::array<double, 2>{0.5, -0.001},
+                            std::array<double, 2>{1.001, 1.001}}) {
+    const auto x = positions(where[0], where[1], -1e-5);
+    std::vector<double> du(15, 0.0), force(15, 0.0);
+    pair.evaluate(x.data(), du.data(), 1e-7, 0, force.data());
+    EXPECT_EQ(pair.totals().active, 0) << where[0] << ", " << where[1];
+  }
+}
+
+// A slave node pressed into the valley between two faces of a dented one-layer slab (nodes on
+// the surface's rim, as in a plane-strain model) stays in contact wherever it crosses the
+// shared edge: it is never lost between the faces.
+TEST(PenaltyContact, NodeCrossingTheEdgeOfAValleyIsNeverLost) {
+  const double h = 0.25e-3, t = 1e-3, slope = 6.25e-4, depth = 0.85e-6;
+  PenaltyPairGeometry geometry;
+  geometry.n_surface_nodes = 7;
+  // Nodes 0-2 at y = 0 (x = −h, 0, h), 3-5 at y = t; node 6 the slave.
+  geometry.master_faces = {{0, 1, 4, 3}, {1, 2, 5, 4}};
+  geometry.face_stiffness = {kStiffness, kStiffness};
+  geometry.slave_nodes = {6};
+  geometry.slave_area = {1e-7};
+  geometry.mass = {1, 1, 1, 1, 1, 1, 0.5};
+  PenaltyPairSettings settings;
+  settings.name = "valley";
+  settings.search_margin = h;
+  PenaltyContactPair pair(geometry, settings);
+  for (int k = -200; k <= 200; ++k) {
+    const double offset = k * 1e-11;
+    for (double y : {0.0, 0.5 * t, t}) {
+      const std::vector<double> x = {-h, 0,         h * slope, 0,         0,         0, h,
+                                     0,  h * slope, -h,        t,         h * slope, 0, t,
+                                     0,  h,         t,         h * slope, offset,    y, -depth};
+      std::vector<double> du(21, 0.0), force(21, 0.0);
+      pair.evaluate(x.data(), du.data(), 1e-7, 0, force.data());
+      ASSERT_EQ(pair.totals().active, 1) << "slave at x = " << offset << ", y = " << y;
+      EXPECT_NEAR(force[20], kStiffness * depth, 1e-3 * kStiffness * depth)
+          << "slave at x = " << offset << ", y = " << y;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace railfe

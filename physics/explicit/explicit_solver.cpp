@@ -246,14 +246,17 @@ void ExplicitSolver::step(double dt) {
   const double alpha = settings_.rayleigh_mass;
   const auto& prescribed = motions_->dofs();
 
-  // Predictor on every owned DOF; Rayleigh dissipation takes its first half with v_n.
+  // Predictor on every owned DOF; Rayleigh dissipation takes its first half with v_n, on the
+  // DOFs the corrector damps (not those of rigid bodies' nodes nor prescribed ones).
   double dissipated = 0;
   for (LocalIndex node = 0; node < n_owned_; ++node) {
     const double m = mass_[node];
+    const bool carried = discrete_->carried(node);
     for (int d = 0; d < 3; ++d) {
       const std::size_t k = 3 * static_cast<std::size_t>(node) + d;
       const double step = dt * v_[k] + 0.5 * dt * dt * a_[k];
-      dissipated += 0.5 * alpha * m * v_[k] * step;
+      if (!carried && !motions_->prescribed(static_cast<LocalIndex>(k)))
+        dissipated += 0.5 * alpha * m * v_[k] * step;
       du_[k] = step;
       u_[k] += step;
       v_[k] += 0.5 * dt * a_[k];

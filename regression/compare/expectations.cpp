@@ -44,6 +44,12 @@ ParameterSpec expectation_parameters() {
                 {"max_abs", "the largest magnitude"},
                 {"at", "the value at one node or element (Index)"}},
                "Exodus: which value(s) to compare.");
+  check.text("Where column", "",
+             "CSV, with Statistic max, min or max_abs: take the extreme only over the rows whose "
+             "value in this column lies within Where range (e.g. the patch's slave nodes that "
+             "stick: 'slipping' within {0, 0}).");
+  check.real_array("Where range", {}, "CSV: the closed interval {low, high} of Where column.", "",
+                   2);
   check.integer("Index", 1, "Exodus: 1-based node or element id for Statistic 'at'.",
                 Range::at_least(1));
   check.text("Node set", "", "Exodus, nodal 'all': compare only the nodes of this set.");
@@ -110,6 +116,37 @@ std::string csv_cell(const Teuchos::ParameterList& check, const std::string& pat
   return table.rows[*row][column];
 }
 
+// The rows a check's Where column and Where range select (every row without them).
+struct RowFilter {
+  bool active = false;
+  std::size_t column = 0;
+  double low = 0, high = 0;
+
+  bool accepts(const std::vector<std::string>& row) const {
+    if (!active)
+      return true;
+    double value = 0;
+    if (!parse_number(row[column], value))
+      throw std::runtime_error("Where column cell '" + row[column] + "' is not a number");
+    return value >= low && value <= high;
+  }
+};
+
+RowFilter row_filter(const Teuchos::ParameterList& check, const CsvTable& table) {
+  RowFilter filter;
+  const std::string name = check.get<std::string>("Where column");
+  const auto& range = check.get<Teuchos::Array<double>>("Where range");
+  if (name.empty() != range.empty())
+    throw std::runtime_error("give both Where column and Where range, or neither");
+  if (name.empty())
+    return filter;
+  filter.active = true;
+  filter.column = table.column(name);
+  filter.low = range[0];
+  filter.high = range[1];
+  return filter;
+}
+
 // The one value a Statistic (max, min, max_abs) picks from \p quantity.
 Quantity reduce(const Quantity& quantity, const std::string& statistic) {
   auto pick = std::max_element(quantity.values.begin(), quantity.values.end());
@@ -133,7 +170,10 @@ Quantity read_quantity(const Teuchos::ParameterList& check, const std::string& d
     // A whole CSV column (a history): its extreme.
     const CsvTable table = read_csv(path);
     const std::size_t column = table.column(check.get<std::string>("Column"));
+    const RowFilter filter = row_filter(check, table);
     for (const auto& row : table.rows) {
+      if (!filter.accepts(row))
+        continue;
       double value = 0;
       if (!parse_number(row[column], value))
         throw std::runtime_error("cell '" + row[column] + "' is not a number");
@@ -141,9 +181,12 @@ Quantity read_quantity(const Teuchos::ParameterList& check, const std::string& d
       quantity.points.push_back({0, 0, 0});
     }
     if (quantity.values.empty())
-      throw std::runtime_error("the column is empty");
+      throw std::runtime_error(filter.active ? "no row lies within Where range"
+                                             : "the column is empty");
     return reduce(quantity, statistic);
   }
+  if (!check.get<std::string>("Where column").empty())
+    throw std::runtime_error("Where column needs a CSV Column and Statistic max, min or max_abs");
   if (!check.get<std::string>("Column").empty()) {
     const std::string cell = csv_cell(check, path);
     double value = 0;
