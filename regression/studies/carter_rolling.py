@@ -1,7 +1,7 @@
 """Carter's 2-D steady rolling of two identical elastic bodies, and its measurement on a run of the
 case inputs/verification/contact_rolling_carter (or a study variant of it). Shared by
-contact_rolling_speed_accuracy.py; `python3 carter_rolling.py RESULTS_DIR` prints one run's
-comparison. Uses NumPy.
+contact_rolling_speed_accuracy.py; `python3 carter_rolling.py RESULTS_DIR [OMEGA_FREE]` prints
+the comparison of one run of the case. Uses NumPy.
 
 Reference (Carter 1926; Johnson, Contact Mechanics, 1985, section 8.4): two identical elastic
 cylinders (or a cylinder on a block) in plane strain, pressed by P' per unit length, with
@@ -83,19 +83,17 @@ def window_mean(rows, column, window):
     return sum(values) / len(values)
 
 
-def measure(results, step, pair, mu, free_window, driven_window, patch_index):
-    """Measures one run against Carter; returns a dict of measured and reference values.
+def measure(results, step, pair, mu, window, patch_index, omega_free):
+    """Measures one driven run against Carter; returns a dict of measured and reference values.
 
-    free_window, driven_window: (start, end) in s of the free-rolling and driven phases, over
-    which the hub's angular speed and the contact forces are averaged; patch_index: the patch
-    file (1-based) written in the driven phase."""
+    window: (start, end) in s over which the hub's angular speed and the contact forces are
+    averaged; patch_index: the patch file (1-based) to compare; omega_free: the free-rolling
+    angular speed (rad/s) of the same model, the reference of the creepage."""
     t, theta = hub_angle(csv_rows(os.path.join(results, f"{step}_histories.csv")))
-    omega_free = mean_rate(t, theta, free_window)
-    omega = mean_rate(t, theta, driven_window)
+    omega = mean_rate(t, theta, window)
     contact = csv_rows(os.path.join(results, f"{step}_contact_{pair}.csv"))
-    normal = window_mean(contact, "normal_force_N", driven_window)
-    creep_force = window_mean(contact, "tangential_1_N", driven_window)
-    free_force = window_mean(contact, "tangential_1_N", free_window)
+    normal = window_mean(contact, "normal_force_N", window)
+    creep_force = window_mean(contact, "tangential_1_N", window)
     load = normal / THICKNESS
     ratio = abs(creep_force) / (mu * normal)
     reference = carter(load, ratio, mu)
@@ -113,12 +111,10 @@ def measure(results, step, pair, mu, free_window, driven_window, patch_index):
     shear_error = float(np.sqrt(np.mean((q - q_ref) ** 2)) / (mu * reference["p0"]))
     stick_length = (stick.max() - stick.min()) if stick.size else 0.0
     return {
-        "omega_free_rad/s": omega_free,
         "omega_rad/s": omega,
         "creepage": creepage,
         "normal_force_N": normal,
         "creep_force_N": creep_force,
-        "free_rolling_force_N": free_force,
         "traction_ratio": ratio,
         "carter_creepage": reference["creepage"],
         "creepage_error": creepage / reference["creepage"] - 1,
@@ -140,6 +136,8 @@ def measure(results, step, pair, mu, free_window, driven_window, patch_index):
 
 
 if __name__ == "__main__":
-    row = measure(sys.argv[1], "roll", "rolling", 0.3, (1.5e-4, 2.5e-4), (4e-4, 5.5e-4), 3)
+    # RESULTS_DIR [OMEGA_FREE]: the case's run (patch 2 at 0.8 ms, means over 0.5-0.8 ms)
+    free = float(sys.argv[2]) if len(sys.argv) > 2 else 199.966291
+    row = measure(sys.argv[1], "roll", "rolling", 0.3, (5e-4, 8e-4), 2, free)
     for key, value in row.items():
         print(f"{key:32s} {value:.6g}")

@@ -39,6 +39,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import carter_rolling  # noqa: E402
@@ -49,6 +50,8 @@ DECK = os.path.join(ROOT, "inputs", "verification", "contact_rolling_carter", "d
 GEO = os.path.join(ROOT, "inputs", "meshes", "rolling_cylinder.geo")
 CSV = os.path.join(ROOT, "docs", "data", "contact_rolling_speed_accuracy.csv")
 PNG = os.path.join(ROOT, "docs", "img", "contact_rolling_speed_accuracy.png")
+PATCH_CSV = os.path.join(ROOT, "docs", "data", "contact_rolling_patch.csv")
+PATCH_RUN = (0.125, 1.0)  # the run whose patch is drawn against Carter's
 
 SIZES_MM = [0.25, 0.1667, 0.125]
 FACTORS = [0.3, 1.0, 3.0]
@@ -149,21 +152,7 @@ def measure(size_mm, factor, creepage, omega_free, work, railfe):
            "hub_creepage_over_V/R": creepage, "elements": step["elements"],
            "steps": step["steps"], "wall_time_s": summary["Wall time"]["total [s]"],
            "omega_free_rad/s": omega_free}
-    measured = carter_rolling.measure(results, "roll", "rolling", MU, WINDOW, WINDOW, 1)
-    # The creepage against the free-rolling run (measure() took the driven run's own window).
-    omega = measured["omega_rad/s"]
-    creepage_free = omega / omega_free - 1
-    load = measured["normal_force_N"] / carter_rolling.THICKNESS
-    expected = carter_rolling.carter_force_ratio(load, creepage_free, MU)
-    measured.pop("omega_free_rad/s")
-    measured.update({
-        "creepage": creepage_free,
-        "carter_force_ratio_at_creepage": expected,
-        "creep_force_error": measured["traction_ratio"] / expected - 1,
-        "carter_creepage": carter_rolling.carter(load, measured["traction_ratio"],
-                                                 MU)["creepage"],
-    })
-    measured["creepage_error"] = creepage_free / measured["carter_creepage"] - 1
+    measured = carter_rolling.measure(results, "roll", "rolling", MU, WINDOW, 1, omega_free)
     contact = csv_rows(os.path.join(results, "roll_contact_rolling.csv"))
     window = [r for r in contact if WINDOW[0] <= float(r["time_s"]) <= WINDOW[1]]
     measured["creep_force_std_N"] = float(np.std([float(r["tangential_1_N"]) for r in window]))
@@ -171,12 +160,31 @@ def measure(size_mm, factor, creepage, omega_free, work, railfe):
     energy = csv_rows(os.path.join(results, "roll_energy.csv"))
     measured["max_abs_energy_error"] = max(abs(float(r["energy_error"])) for r in energy)
     row.update(measured)
-    print(f"h {size_mm:g} mm, f {factor:g}, hub creepage {creepage:g}: xi {creepage_free:.4e}, "
-          f"Q/muP {measured['traction_ratio']:.4f} (Carter {expected:.4f}, "
+    print(f"h {size_mm:g} mm, f {factor:g}, hub creepage {creepage:g}: xi {row['creepage']:.4e}, "
+          f"Q/muP {row['traction_ratio']:.4f} (Carter "
+          f"{row['carter_force_ratio_at_creepage']:.4f}, "
           f"{row['creep_force_error']:+.2%}), p0 {row['p0_error']:+.2%}, b {row['b_error']:+.2%}, "
           f"adhesion {row['adhesion_error']:+.2%}, shear rms {row['shear_rms_error']:.3f}, "
           f"{row['wall_time_s']:.0f} s", flush=True)
     return row
+
+
+def write_patch(row, work):
+    """Writes the patch of the PATCH_RUN case with Hertz's pressure and Carter's shear at its
+    measured P and Q (PATCH_CSV: one row per slave node in contact)."""
+    size, factor = PATCH_RUN
+    results = os.path.join(work, f"roll_h{size:g}_f{factor:g}_xi{CASE_CREEPAGE:g}_results")
+    patch = csv_rows(os.path.join(results, "roll_contact_rolling_patch_1.csv"))
+    load = row["normal_force_N"] / carter_rolling.THICKNESS
+    reference = carter_rolling.carter(load, row["traction_ratio"], MU)
+    with open(PATCH_CSV, "w") as out:
+        out.write("s1_mm,pressure_MPa,shear_MPa,slipping,hertz_pressure_MPa,carter_shear_MPa\n")
+        for r in sorted(patch, key=lambda r: float(r["s1_m"])):
+            s = float(r["s1_m"])
+            hertz = reference["p0"] * math.sqrt(max(0.0, 1 - (s / reference["b"]) ** 2))
+            out.write(f"{s * 1e3!r},{float(r['pressure_Pa']) * 1e-6!r},"
+                      f"{float(r['shear_1_Pa']) * 1e-6!r},{int(float(r['slipping']))},"
+                      f"{hertz * 1e-6!r},{float(reference['shear'](s)) * 1e-6!r}\n")
 
 
 def write_csv(rows):
@@ -190,7 +198,8 @@ def write_csv(rows):
 
 
 def plot(rows):
-    fig, axes = plt.subplots(1, 3, figsize=(15, 5))
+    fig, grid = plt.subplots(2, 2, figsize=(13, 10))
+    axes = grid.ravel()
     markers = {0.25: "o", 0.1667: "s", 0.125: "^"}
     colours = {f: f"C{k}" for k, f in enumerate(FACTORS)}
     case_rows = [r for r in rows if abs(r["hub_creepage_over_V/R"] - CASE_CREEPAGE) < 1e-9]
@@ -205,8 +214,11 @@ def plot(rows):
                             color=colours[row["penalty_factor"]], capsize=3, lw=0.8)
         ax.axhline(0, color="k", lw=0.8)
         ax.set_xscale("log")
+        ax.set_xticks([60, 100, 200, 400, 800])
+        ax.xaxis.set_major_formatter(matplotlib.ticker.FormatStrFormatter("%g"))
+        ax.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
         ax.set_xlabel("wall time of the run (s; one rank, two runs at a time on 2 cores)")
-        ax.set_ylabel(f"error against Carter / Hertz (%)")
+        ax.set_ylabel("error against Carter / Hertz (%)")
         ax.set_title(label, fontsize=10)
         ax.grid(True, which="both", alpha=0.3)
     for size, marker in markers.items():
@@ -232,6 +244,28 @@ def plot(rows):
     ax.set_title("creep curve", fontsize=10)
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8, loc="lower right")
+    if os.path.exists(PATCH_CSV):
+        patch = csv_rows(PATCH_CSV)
+        ax = axes[3]
+        run = next(r for r in rows if (r["element_size_mm"], r["penalty_factor"]) == PATCH_RUN
+                   and abs(r["hub_creepage_over_V/R"] - CASE_CREEPAGE) < 1e-9)
+        reference = carter_rolling.carter(run["normal_force_N"] / carter_rolling.THICKNESS,
+                                          run["traction_ratio"], MU)
+        x = np.linspace(-reference["b"], reference["b"], 801)
+        ax.plot(1e3 * x, 1e-6 * MU * reference["p0"] * np.sqrt(1 - (x / reference["b"]) ** 2),
+                "k:", lw=1, label="mu p, Hertz")
+        ax.plot(1e3 * x, 1e-6 * reference["shear"](x), "k-", lw=1.5,
+                label=f"q, Carter at the measured Q/(mu P) = {run['traction_ratio']:.3f}")
+        for slip, marker, name in [(1, "x", "slipping"), (0, "o", "sticking")]:
+            pick = [r for r in patch if int(r["slipping"]) == slip]
+            ax.plot([float(r["s1_mm"]) for r in pick], [float(r["shear_MPa"]) for r in pick],
+                    marker, color="C3", mfc="none", label=f"railfe nodal shear, {name}")
+        ax.set_xlabel("s1 (mm; the contact moves towards +s1: leading edge on the right)")
+        ax.set_ylabel("shear traction (MPa)")
+        ax.set_title(f"patch at 1.2 ms, h = {PATCH_RUN[0]:g} mm, f = {PATCH_RUN[1]:g}",
+                     fontsize=10)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=8)
     fig.suptitle("Steady rolling in plane strain against Carter: steel cylinder R = 0.1 m on a "
                  "block, V = 20 m/s, mu = 0.3, P' ~ 4.1 MN/m (b ~ 2.13 mm); means over "
                  "0.6-1.2 ms", fontsize=10)
@@ -269,8 +303,10 @@ def main():
                    for case in reversed(cases)}
         rows = [futures[case].result() for case in cases]
     write_csv(rows)
+    write_patch(next(r for r in rows if (r["element_size_mm"], r["penalty_factor"]) == PATCH_RUN
+                     and r["hub_creepage_over_V/R"] == CASE_CREEPAGE), args.work)
     plot(rows)
-    print(f"wrote {CSV} and {PNG}")
+    print(f"wrote {CSV}, {PATCH_CSV} and {PNG}")
 
 
 if __name__ == "__main__":
