@@ -22,8 +22,9 @@ creepage, Q/(mu P) = 1 - (1 - xi R / (mu b))^2, and the patch at the measured Q.
 
 Writes docs/data/contact_rolling_speed_accuracy.csv (units in the column names) and
 docs/img/contact_rolling_speed_accuracy.png (creep-force and peak-pressure error against wall
-time). 17 runs, about 20 min on 2 cores with --jobs 2 (run with nice; wall times are those of
-two runs at a time on a shared 2-core machine).
+time, the creep curve, and the patch of the 0.125 mm, f = 1 run against Carter's shear, whose
+nodes go to docs/data/contact_rolling_patch.csv). 13 runs (3 free, 10 driven), 36 min with
+--jobs 2 on a 2-core machine shared with other work (about half that idle); run it with nice.
 """
 import argparse
 import concurrent.futures
