@@ -28,8 +28,8 @@ DefineConstant[ ds = {2e-3, Name "Parameters/depth of the structured contact zon
 DefineConstant[ rn = {31e-3, Name "Parameters/radius of the near zone (blocks *_near) (m)"} ];
 R = 0.1;     // cylinder radius
 t = 1e-3;    // thickness along y
-L = 0.05;    // block half-width
-D = 0.05;    // block depth
+DefineConstant[ L = {0.05, Name "Parameters/block half-width (m)"} ];
+DefineConstant[ D = {0.05, Name "Parameters/block depth (m)"} ];
 gap = 1e-7;  // initial gap between cylinder and block
 nl = Round(xl / h);  // band elements behind x = 0
 nr = Round(xr / h);  // band elements ahead of x = 0
