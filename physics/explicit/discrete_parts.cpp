@@ -1,6 +1,7 @@
 #include "physics/explicit/discrete_parts.hpp"
 
 #include <cmath>
+#include <string>
 
 #include "framework/base/error.hpp"
 #include "framework/mesh/partition.hpp"
@@ -14,13 +15,10 @@ Eigen::Vector3d vector_of(const std::array<double, 3>& values) {
   return {values[0], values[1], values[2]};
 }
 
-// exp([w]×): the rotation by |w| about w (Rodrigues).
-Eigen::Matrix3d rotation_of(const Eigen::Vector3d& w) {
-  const double angle = w.norm();
-  if (angle < 1e-300)
-    return Eigen::Matrix3d::Identity();
-  return Eigen::AngleAxisd(angle, w / angle).toRotationMatrix();
-}
+// Values per body in state(): U, V, A, ω, ω̇, previous own force and moment, ΔU, R, work; then
+// L and M (absent from checkpoints written before the momentum scheme).
+constexpr std::size_t kOldStateSize = 8 * 3 + 9 + 1;
+constexpr std::size_t kStateSize = kOldStateSize + 6;
 
 }  // namespace
 
@@ -92,6 +90,11 @@ DiscreteParts::DiscreteParts(const ExplicitSettings& settings, const MeshPartiti
       if (body.fixed[3 + d])
         body.angular_velocity[d] = 0;
     }
+    const std::array<bool, 3> locked =
+        body.rotates ? std::array<bool, 3>{body.fixed[3], body.fixed[4], body.fixed[5]}
+                     : std::array<bool, 3>{true, true, true};
+    rotations_.emplace_back(body.inertia, locked);
+    body.angular_momentum = rotations_.back().momentum(body.rotation, body.angular_velocity);
     bodies_.push_back(std::move(body));
   }
 
@@ -168,14 +171,23 @@ void DiscreteParts::initialise_nodes(NodalArrays& nodes) const {
 }
 
 void DiscreteParts::predict(double dt, NodalArrays& nodes) {
-  for (RigidBody& body : bodies_) {
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    RigidBody& body = bodies_[b];
     const Eigen::Vector3d step = dt * body.velocity + 0.5 * dt * dt * body.acceleration;
     body.displacement += step;
-    body_step_[&body - bodies_.data()] = step;
+    body_step_[b] = step;
     body.velocity += 0.5 * dt * body.acceleration;
     if (body.rotates) {
-      body.angular_velocity += 0.5 * dt * body.angular_acceleration;
-      body.rotation = rotation_of(dt * body.angular_velocity) * body.rotation;
+      // Kick with the last step's moment, then the free rotation; the nodes move with the
+      // angular velocity of the kicked momentum at the new orientation.
+      const RigidRotation& rotation = rotations_[b];
+      const Eigen::Vector3d before = body.angular_velocity;
+      rotation.kick(0.5 * dt * body.moment, body.angular_momentum);
+      const Eigen::Vector3d after = rotation.angular_velocity(body.rotation, body.angular_momentum);
+      // The kick changes the kinetic energy by ½Δt M·½(ω_before + ω_after) exactly.
+      body.work += 0.25 * dt * previous_own_moment_[b].dot(before + after);
+      rotation.drift(dt, body.angular_momentum, body.rotation);
+      body.angular_velocity = rotation.angular_velocity(body.rotation, body.angular_momentum);
     }
     body.force.setZero();
     body.moment.setZero();
@@ -286,26 +298,29 @@ void DiscreteParts::correct(double time, double dt, const std::array<double, 3>&
     body.force += own_force;
     body.moment += own_moment;
 
-    const Eigen::Vector3d step_rotation = dt * body.angular_velocity;
-    body.work += 0.5 * (own_force + previous_own_force_[b]).dot(body_step_[b]) +
-                 0.5 * (own_moment + previous_own_moment_[b]).dot(step_rotation);
+    body.work += 0.5 * (own_force + previous_own_force_[b]).dot(body_step_[b]);
     previous_own_force_[b] = own_force;
     previous_own_moment_[b] = own_moment;
 
     body.acceleration = body.force / body.mass;
-    if (body.rotates) {
-      const Eigen::Matrix3d inertia = body.rotation * body.inertia * body.rotation.transpose();
-      const Eigen::Vector3d& w = body.angular_velocity;
-      body.angular_acceleration = inertia.ldlt().solve(body.moment - w.cross(inertia * w));
-    }
-    for (int d = 0; d < 3; ++d) {
+    for (int d = 0; d < 3; ++d)
       if (body.fixed[d])
         body.acceleration[d] = 0;
-      if (body.fixed[3 + d])
-        body.angular_acceleration[d] = 0;
-    }
     body.velocity += 0.5 * dt * body.acceleration;
-    body.angular_velocity += 0.5 * dt * body.angular_acceleration;
+    if (body.rotates) {
+      // Second kick, with the moment at the new orientation (its work exact, as in predict()).
+      const RigidRotation& rotation = rotations_[b];
+      const Eigen::Vector3d before = body.angular_velocity;
+      rotation.kick(0.5 * dt * body.moment, body.angular_momentum);
+      body.angular_velocity = rotation.angular_velocity(body.rotation, body.angular_momentum);
+      body.work += 0.25 * dt * own_moment.dot(before + body.angular_velocity);
+      // About locked axes L is whatever the reaction makes it: I_s ω (a free body keeps its L
+      // untouched, so that it is conserved to the last bit without moments).
+      if (body.fixed[3] || body.fixed[4] || body.fixed[5])
+        body.angular_momentum = rotation.momentum(body.rotation, body.angular_velocity);
+      body.angular_acceleration =
+          rotation.angular_acceleration(body.rotation, body.angular_velocity, body.moment);
+    }
     for (std::size_t i = 0; i < body.nodes.size(); ++i) {
       const LocalIndex node = body.nodes[i];
       const Eigen::Vector3d r = body.rotation * body.offsets[i];
@@ -323,10 +338,10 @@ void DiscreteParts::correct(double time, double dt, const std::array<double, 3>&
 
 double DiscreteParts::kinetic_energy() const {
   double energy = 0;
-  for (const RigidBody& body : bodies_) {
-    const Eigen::Matrix3d inertia = body.rotation * body.inertia * body.rotation.transpose();
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const RigidBody& body = bodies_[b];
     energy += 0.5 * body.mass * body.velocity.squaredNorm() +
-              0.5 * body.angular_velocity.dot(inertia * body.angular_velocity);
+              rotations_[b].kinetic_energy(body.rotation, body.angular_velocity);
   }
   return energy;
 }
@@ -348,23 +363,42 @@ std::vector<double> DiscreteParts::state() const {
       values.insert(values.end(), vector->data(), vector->data() + 3);
     values.insert(values.end(), body.rotation.data(), body.rotation.data() + 9);
     values.push_back(body.work);
+    values.insert(values.end(), body.angular_momentum.data(), body.angular_momentum.data() + 3);
+    values.insert(values.end(), body.moment.data(), body.moment.data() + 3);
   }
   return values;
 }
 
 void DiscreteParts::restore(const std::vector<double>& values) {
+  const bool old = values.size() == kOldStateSize * bodies_.size();
+  if (!old && values.size() != kStateSize * bodies_.size())
+    throw RunError("the checkpoint's rigid bodies do not fit this model (" +
+                   std::to_string(values.size()) + " values for " + std::to_string(bodies_.size()) +
+                   " bodies)");
   std::size_t k = 0;
+  auto read = [&](Eigen::Vector3d& vector) {
+    for (int d = 0; d < 3; ++d)
+      vector[d] = values[k++];
+  };
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     RigidBody& body = bodies_[b];
     for (auto* vector : {&body.displacement, &body.velocity, &body.acceleration,
                          &body.angular_velocity, &body.angular_acceleration,
-                         &previous_own_force_[b], &previous_own_moment_[b], &body_step_[b]}) {
-      for (int d = 0; d < 3; ++d)
-        (*vector)[d] = values.at(k++);
-    }
+                         &previous_own_force_[b], &previous_own_moment_[b], &body_step_[b]})
+      read(*vector);
     for (int i = 0; i < 9; ++i)
-      body.rotation.data()[i] = values.at(k++);
-    body.work = values.at(k++);
+      body.rotation.data()[i] = values[k++];
+    body.work = values[k++];
+    if (old) {
+      // The former scheme kept ω̇ = I_s⁻¹ (M − ω × I_s ω): M from it (exact on free axes).
+      const Eigen::Matrix3d inertia = body.rotation * body.inertia * body.rotation.transpose();
+      const Eigen::Vector3d& w = body.angular_velocity;
+      body.angular_momentum = rotations_[b].momentum(body.rotation, w);
+      body.moment = inertia * body.angular_acceleration + w.cross(inertia * w);
+      continue;
+    }
+    read(body.angular_momentum);
+    read(body.moment);
   }
 }
 

@@ -4,8 +4,9 @@
 /// replicated on every rank; the nodes it carries are moved with it, and their forces are summed
 /// over ranks each step (one reduction for all bodies). Springs to node sets act on the owned
 /// nodes of each rank; springs between bodies and to the ground are evaluated on every rank.
-/// Time stepping is the same central difference as the nodes: translation exactly, rotation with
-/// the midpoint angular velocity and an exponential-map update of the orientation.
+/// Time stepping is the same central difference as the nodes: translation exactly, rotation as
+/// kick–drift–kick on the spatial angular momentum with an energy- and momentum-conserving free
+/// rotation between the kicks (rigid_rotation.hpp).
 
 #include <array>
 #include <string>
@@ -17,6 +18,7 @@
 #include "framework/base/types.hpp"
 #include "framework/deck/expression.hpp"
 #include "physics/explicit/explicit_settings.hpp"
+#include "physics/explicit/rigid_rotation.hpp"
 
 namespace railfe {
 
@@ -51,6 +53,7 @@ struct RigidBody {
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  ///< R
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();      ///< ω (rad/s)
   Eigen::Vector3d angular_acceleration = Eigen::Vector3d::Zero();  ///< ω̇
+  Eigen::Vector3d angular_momentum = Eigen::Vector3d::Zero();      ///< L = R I Rᵀ ω (N m s)
   Eigen::Vector3d force = Eigen::Vector3d::Zero();                 ///< force of the step (N)
   Eigen::Vector3d moment = Eigen::Vector3d::Zero();                ///< moment about the point (N m)
   double work = 0;  ///< work of the body-level loads (J)
@@ -96,7 +99,8 @@ class DiscreteParts {
   double external_work() const;
   /// Everything that changes in time, for checkpoints.
   std::vector<double> state() const;
-  /// Restores what state() saved.
+  /// Restores what state() saved; also a checkpoint of railfe before the momentum scheme (without
+  /// L and M, which it rebuilds from ω, ω̇ and R). Throws RunError for a state of another model.
   void restore(const std::vector<double>& values);
 
  private:
@@ -113,6 +117,7 @@ class DiscreteParts {
   void add_body_force(const Spring& spring, const Eigen::Vector3d& force_on_a, bool to_b);
 
   std::vector<RigidBody> bodies_;
+  std::vector<RigidRotation> rotations_;  // per body
   std::vector<Spring> springs_;
   std::vector<int> body_of_node_;
   std::vector<BodyMoment> moments_;

@@ -1,5 +1,6 @@
 #include "physics/explicit/explicit_output.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "framework/base/error.hpp"
@@ -21,11 +22,17 @@ namespace {
 // Steps before the energy balance is judged against its limit.
 constexpr long long kSettlingSteps = 20;
 
-const char* kQuantityUnits[3] = {"m", "m_per_s", "m_per_s2"};
+const char* kQuantityUnits[6] = {"m", "m_per_s", "m_per_s2", "rad_per_s", "rad_per_s", "N_m_s"};
 const char* kStressNames[6] = {"xx", "yy", "zz", "xy", "yz", "zx"};
 
 int quantity_index(const std::string& quantity) {
-  return quantity == "displacement" ? 0 : quantity == "velocity" ? 1 : 2;
+  const char* names[6] = {"displacement",          "velocity",
+                          "acceleration",          "angular velocity",
+                          "body angular velocity", "angular momentum"};
+  for (int q = 0; q < 6; ++q)
+    if (quantity == names[q])
+      return q;
+  return 2;
 }
 
 double von_mises(const double* s) {
@@ -84,7 +91,9 @@ ExplicitRecorder::ExplicitRecorder(const ExplicitSettings& settings, const Expli
             ? 1.0
             : static_cast<double>(comm.sum(static_cast<long long>(nodes.size()))));
     history_nodes_.push_back(nodes);
-    columns.push_back(history.name + "_" + history.quantity + "_" +
+    std::string quantity = history.quantity;
+    std::replace(quantity.begin(), quantity.end(), ' ', '_');
+    columns.push_back(history.name + "_" + quantity + "_" +
                       std::string(1, "xyz"[history.component]) + "_" +
                       kQuantityUnits[quantity_index(history.quantity)]);
   }
@@ -146,10 +155,12 @@ bool ExplicitRecorder::record(bool force_rows) {
         for (const RigidBody& body : solver_.bodies()) {
           if (body.name == history.body && root_) {
             const int q = quantity_index(history.quantity);
-            const auto& vector = q == 0   ? body.displacement
-                                 : q == 1 ? body.velocity
-                                          : body.acceleration;
-            value = vector[history.component];
+            const Eigen::Vector3d body_frame = body.rotation.transpose() * body.angular_velocity;
+            const Eigen::Vector3d momentum = body.rotation * (body.inertia * body_frame);
+            const Eigen::Vector3d* vectors[6] = {&body.displacement, &body.velocity,
+                                                 &body.acceleration, &body.angular_velocity,
+                                                 &body_frame,        &momentum};
+            value = (*vectors[q])[history.component];
           }
         }
         sums.push_back(value);

@@ -112,7 +112,12 @@ ParameterSpec output_parameters() {
   history.text("Node set", "", "The nodes averaged (give this or Body).");
   history.text("Body", "", "A rigid body or point mass (give this or Node set).");
   history.choice("Quantity", "displacement",
-                 {{"displacement", "m"}, {"velocity", "m/s"}, {"acceleration", "m/s^2"}},
+                 {{"displacement", "m"},
+                  {"velocity", "m/s"},
+                  {"acceleration", "m/s^2"},
+                  {"angular velocity", "rad/s, spatial (Body only)"},
+                  {"body angular velocity", "rad/s, in the body's axes R^T omega (Body only)"},
+                  {"angular momentum", "N m s, spatial, about the reference point (Body only)"}},
                  "What is recorded.");
   history.choice("Component", "x", {{"x", "x"}, {"y", "y"}, {"z", "z"}}, "Which component.");
   history.real("Arrival level", 0.0,
@@ -369,6 +374,10 @@ void read_output(const Teuchos::ParameterList& output, const std::string& deck,
                                              : "names both a Node set and a Body",
                         "exactly one of Node set and Body");
     history.quantity = entry.template get<std::string>("Quantity");
+    if (history.body.empty() && history.quantity.find("angular") != std::string::npos)
+      throw_input_error(deck, path + "/Output/Histories/" + name + "/Quantity",
+                        "'" + history.quantity + "' is a rigid body's quantity",
+                        "a Body, or displacement, velocity or acceleration of a Node set");
     history.component = std::string("xyz").find(entry.template get<std::string>("Component"));
     history.arrival_level = entry.template get<double>("Arrival level");
     history.period_reference = entry.template get<double>("Period reference");
