@@ -100,6 +100,9 @@ PenaltyContactPair::PenaltyContactPair(PenaltyPairGeometry geometry, PenaltyPair
     if (geometry_.face_stiffness[f] > 0)
       stable_step_ = std::min(stable_step_, 2 * std::sqrt(reduced / geometry_.face_stiffness[f]));
   }
+  // Central difference with a viscous damper of fraction ζ: ω Δt ≤ 2 (√(1 + ζ²) − ζ).
+  const double zeta = settings_.damping_fraction;
+  stable_step_ *= std::sqrt(1 + zeta * zeta) - zeta;
 }
 
 PenaltyContactPair::~PenaltyContactPair() = default;

@@ -78,7 +78,8 @@ class PenaltyContactPair {
   PenaltyContactPair& operator=(PenaltyContactPair&&) noexcept;
 
   /// Critical step of the contact springs: the smallest 2√(m/k) over the faces, m the reduced
-  /// mass of the lightest slave node and the face's mean nodal mass (s).
+  /// mass of the lightest slave node and the face's mean nodal mass, times √(1 + ζ²) − ζ for
+  /// the normal damping fraction ζ (s).
   double stable_step() const { return stable_step_; }
   /// Finds the contact points at positions \p x (3 per surface node) without forces, for the
   /// checks at the start; fills slaves().

@@ -167,16 +167,57 @@ QuadProjection project_face(const std::array<int, 4>& nodes, const double* posit
                            x);
 }
 
+// A lower bound of the distance from \p x to the face: the distance to the box around its
+// corners, which holds the whole bilinear face. Cheap against a projection.
+double box_distance(const std::array<int, 4>& nodes, const double* positions, const double* x) {
+  double squared = 0;
+  for (int d = 0; d < 3; ++d) {
+    double low = positions[3 * static_cast<std::size_t>(nodes[0]) + d], high = low;
+    for (int a = 1; a < 4; ++a) {
+      const double value = positions[3 * static_cast<std::size_t>(nodes[a]) + d];
+      low = std::min(low, value);
+      high = std::max(high, value);
+    }
+    const double outside = std::max({low - x[d], x[d] - high, 0.0});
+    squared += outside * outside;
+  }
+  return std::sqrt(squared);
+}
+
+// Whether a face whose box lies \p bound away can be skipped against the nearest distance so
+// far, \p best: it cannot be nearer, nor share the nearest point (a margin for round-off in the
+// projection's distance).
+bool cannot_compete(double bound, double best) {
+  return bound > best + 1e-9 * (best + bound) + 1e-300;
+}
+
 }  // namespace
 
 ContactPoint find_contact_point(const BucketSearch& search, const double* positions,
                                 const double* x, std::vector<int>& scratch) {
   search.candidates(x, scratch);
   ContactPoint best;
+  // Project first onto the face whose box is nearest, then only onto faces that could be
+  // nearer: most candidates of a node in a patch are its face's neighbours, a box away.
+  int first = -1;
+  double first_bound = std::numeric_limits<double>::infinity();
   for (int f : scratch) {
+    const double bound = box_distance(search.faces()[f], positions, x);
+    if (bound < first_bound) {
+      first_bound = bound;
+      first = f;
+    }
+  }
+  if (first >= 0)
+    best = {first, project_face(search.faces()[first], positions, x), false};
+  for (int f : scratch) {
+    if (f == first ||
+        cannot_compete(box_distance(search.faces()[f], positions, x), best.projection.distance))
+      continue;
     const QuadProjection projection = project_face(search.faces()[f], positions, x);
-    // Strictly nearer: among exact ties the smallest face index (candidates come sorted).
-    if (best.face < 0 || projection.distance < best.projection.distance)
+    // Strictly nearer, or as near from a smaller face index (as if taken in order).
+    if (projection.distance < best.projection.distance ||
+        (projection.distance == best.projection.distance && f < best.face))
       best = {f, projection, false};
   }
   if (best.face < 0 || !best.projection.on_boundary)
@@ -192,6 +233,9 @@ ContactPoint find_contact_point(const BucketSearch& search, const double* positi
   std::array<double, 3> normal_sum{};
   int sharing = 0;
   for (int f : scratch) {
+    if (f != best.face &&
+        cannot_compete(box_distance(search.faces()[f], positions, x), chosen.distance))
+      continue;
     const QuadProjection other =
         f == best.face ? chosen : project_face(search.faces()[f], positions, x);
     const double separation =

@@ -85,12 +85,17 @@ ContactNewtonReport solve_with_contact(const Teuchos::RCP<TpetraMatrix>& K, cons
       return report;
     }
   }
+  std::ostringstream limit;
+  limit << tolerance;
   throw RunError(path + ": the contact iterations did not converge in " +
                  std::to_string(report.iterations) + " (Contact iterations) to Contact tolerance " +
-                 std::to_string(tolerance) +
-                 "; relative out-of-balance force per iteration: " + history.str() +
+                 limit.str() + "; relative out-of-balance force per iteration: " + history.str() +
                  ". An active set that keeps changing points to bodies that are not held against "
-                 "rigid motion along the contact surface, or to a Penalty factor far above 1");
+                 "rigid motion along the contact surface, or to a Penalty factor far above 1. A "
+                 "force that stalls while the active set stays the same is the linearisation's "
+                 "limit on curved, deforming surfaces (about 1e-5 to 1e-4 of the force, "
+                 "docs/verification.md#contact-hertz-cylinder): a Contact tolerance above the "
+                 "stalled value accepts it");
 }
 
 }  // namespace railfe
