@@ -237,7 +237,7 @@ def plot(rows):
     ax.get_yaxis().set_major_formatter(matplotlib.ticker.FormatStrFormatter("%g"))
     ax.set_xlim(0.08, 2.3)
     ax.set_ylim(0.07, 150)
-    ax.set_xlabel("fixed step / contact critical step  dt / 2√(m_r/k)")
+    ax.set_xlabel("fixed step / contact critical step  dt / [2√(m_r/k)(√(1+ζ²) − ζ)]")
     ax.set_ylabel("penalty factor f (bulk-modulus form, k = f K A²/V)")
     ax.set_title("Explicit penalty contact, Hertz cylinder at h = 0.25 mm: stability map")
     ax.grid(True, which="both", alpha=0.3)
@@ -245,7 +245,7 @@ def plot(rows):
                for outcome, (m, c, label) in STYLES.items()
                if any(r["outcome"] == outcome for r in rows)]
     handles += [matplotlib.lines.Line2D([], [], color="k", ls="--",
-                                        label="contact critical step 2√(m_r/k) (railfe's limit)"),
+                                        label="contact critical step, damped (railfe's limit)"),
                 matplotlib.lines.Line2D([], [], color="tab:blue",
                                         label="solids' stable step (railfe's limit)"),
                 matplotlib.lines.Line2D([], [], color="tab:green", ls=":",
