@@ -58,19 +58,26 @@ def box_part(name, n, origin):
 """
 
 
-def deck(n, steps, contact):
-    """The model with n x n wheel elements per layer, about `steps` steps, with or without the
-    contact pair."""
-    end_time = steps * 0.85 * H / 6001.4  # the step is about 0.9 x 0.96 x h / c_P
-    pair = """      <ParameterList name="Contact pairs">
+def pair_xml(slave, contact):
+    """The frictional contact pair of `slave` on the rail's top (Coulomb 0.3), or nothing."""
+    if not contact:
+        return ""
+    return f"""      <ParameterList name="Contact pairs">
         <ParameterList name="wheel on rail">
-          <Parameter name="Slave side set" type="string" value="wheel.zmin"/>
+          <Parameter name="Slave side set" type="string" value="{slave}"/>
           <Parameter name="Master side set" type="string" value="rail.zmax"/>
           <Parameter name="Friction" type="string" value="coulomb"/>
           <Parameter name="Friction coefficient" type="double" value="0.3"/>
         </ParameterList>
       </ParameterList>
-""" if contact else ""
+"""
+
+
+def deck(n, steps, contact):
+    """The model with n x n wheel elements per layer, about `steps` steps, with or without the
+    contact pair."""
+    end_time = steps * 0.85 * H / 6001.4  # the step is about 0.9 x 0.96 x h / c_P
+    pair = pair_xml("wheel.zmin", contact)
     return f"""<ParameterList name="railfe">
   <Parameter name="Title" type="string" value="contact benchmark {n}"/>
   <ParameterList name="Mesh">
@@ -109,15 +116,7 @@ def wheel_deck(size, steps, contact):
     elements, bottom held), its whole tread the
     slave surface, pushed down by 50 kN on its bore and gravity; about `steps` steps."""
     end_time = steps * 3.5e-5 * size  # the step is about 3.7e-5 s per metre of Element size
-    pair = """      <ParameterList name="Contact pairs">
-        <ParameterList name="wheel on rail">
-          <Parameter name="Slave side set" type="string" value="wheel.tread"/>
-          <Parameter name="Master side set" type="string" value="rail.zmax"/>
-          <Parameter name="Friction" type="string" value="coulomb"/>
-          <Parameter name="Friction coefficient" type="double" value="0.3"/>
-        </ParameterList>
-      </ParameterList>
-""" if contact else ""
+    pair = pair_xml("wheel.tread", contact)
     return f"""<ParameterList name="railfe">
   <Parameter name="Title" type="string" value="contact benchmark, wheel {size}"/>
   <ParameterList name="Mesh">

@@ -41,7 +41,6 @@ docs/img/contact_cattaneo_mindlin.png. Seven runs, two at a time (the finest mes
 the time); --replot redraws the chart from the CSV file and the kept results in --work, --reuse
 measures the kept results again without running railfe.
 """
-import argparse
 import concurrent.futures
 import json
 import math
@@ -59,7 +58,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from railfe_runs import csv_rows, run_deck, step_section  # noqa: E402
+from railfe_runs import (csv_rows, run_deck, step_section, study_parser,  # noqa: E402
+                         typed_rows)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DECK = os.path.join(ROOT, "inputs", "verification", "contact_cattaneo_mindlin", "deck.xml")
@@ -353,18 +353,12 @@ def plot(rows, work):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("railfe", nargs="?", default=os.path.join(ROOT, "build", "bin", "railfe"))
-    parser.add_argument("--work", default="/tmp/railfe_contact_cattaneo_mindlin")
-    parser.add_argument("--jobs", type=int, default=2)
-    parser.add_argument("--replot", action="store_true",
-                        help="redraw the chart from the CSV file and the kept results")
+    parser = study_parser(__doc__.split("\n")[0], "/tmp/railfe_contact_cattaneo_mindlin", ROOT)
     parser.add_argument("--reuse", action="store_true",
                         help="measure the kept results in --work instead of running railfe")
     args = parser.parse_args()
     if args.replot:
-        rows = [{k: (v if k in ("elements", "steps", "slipping_after_normal_load") else float(v))
-                 for k, v in row.items()} for row in csv_rows(CSV)]
+        rows = typed_rows(CSV, ("elements", "steps", "slipping_after_normal_load"))
         plot(rows, args.work)
         print(f"wrote {PNG}")
         return

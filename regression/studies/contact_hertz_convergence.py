@@ -29,7 +29,6 @@ runs, 12.5 min on 2 cores with --jobs 2 (the default: two runs at a time, so the
 those of a shared machine; the finest mesh takes about 6 min per run, the case's 43 s alone).
 --replot redraws the chart from the CSV file.
 """
-import argparse
 import concurrent.futures
 import math
 import os
@@ -47,7 +46,8 @@ import matplotlib.lines  # noqa: E402
 import matplotlib.ticker  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from railfe_runs import csv_rows, run_deck, step_section  # noqa: E402
+from railfe_runs import (csv_rows, run_deck, step_section, study_parser,  # noqa: E402
+                         typed_rows)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DECK = os.path.join(ROOT, "inputs", "verification", "contact_hertz_cylinder", "deck.xml")
@@ -220,16 +220,10 @@ def plot(rows):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("railfe", nargs="?", default=os.path.join(ROOT, "build", "bin", "railfe"))
-    parser.add_argument("--work", default="/tmp/railfe_contact_hertz_convergence")
-    parser.add_argument("--jobs", type=int, default=2)
-    parser.add_argument("--replot", action="store_true",
-                        help="redraw the chart from the CSV file without running railfe")
+    parser = study_parser(__doc__.split("\n")[0], "/tmp/railfe_contact_hertz_convergence", ROOT)
     args = parser.parse_args()
     if args.replot:
-        rows = [{k: (v if k in ("elements", "steps", "contact_nodes") else float(v))
-                 for k, v in row.items()} for row in csv_rows(CSV)]
+        rows = typed_rows(CSV, ("elements", "steps", "contact_nodes"))
         plot(rows)
         print(f"wrote {PNG}")
         return

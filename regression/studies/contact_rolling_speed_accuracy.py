@@ -26,7 +26,6 @@ time, the creep curve, and the patch of the 0.125 mm, f = 1 run against Carter's
 nodes go to docs/data/contact_rolling_patch.csv). 13 runs (3 free, 10 driven), 36 min with
 --jobs 2 on a 2-core machine shared with other work (about half that idle); run it with nice.
 """
-import argparse
 import concurrent.futures
 import math
 import os
@@ -44,7 +43,8 @@ import matplotlib.ticker  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import carter_rolling  # noqa: E402
-from railfe_runs import csv_rows, run_deck, step_section  # noqa: E402
+from railfe_runs import (csv_rows, run_deck, step_section, study_parser,  # noqa: E402
+                         typed_rows)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DECK = os.path.join(ROOT, "inputs", "verification", "contact_rolling_carter", "deck.xml")
@@ -276,16 +276,11 @@ def plot(rows):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("railfe", nargs="?", default=os.path.join(ROOT, "build", "bin", "railfe"))
-    parser.add_argument("--work", default="/tmp/railfe_contact_rolling_speed_accuracy")
-    parser.add_argument("--jobs", type=int, default=2)
-    parser.add_argument("--replot", action="store_true",
-                        help="redraw the chart from the CSV file without running railfe")
+    parser = study_parser(__doc__.split("\n")[0], "/tmp/railfe_contact_rolling_speed_accuracy",
+                          ROOT)
     args = parser.parse_args()
     if args.replot:
-        rows = [{k: (v if k in ("elements", "steps") else float(v)) for k, v in row.items()}
-                for row in csv_rows(CSV)]
+        rows = typed_rows(CSV, ("elements", "steps"))
         plot(rows)
         print(f"wrote {PNG}")
         return

@@ -1,5 +1,6 @@
 """Helpers shared by the study and benchmark scripts: run railfe on a generated deck and read what
 it wrote (summary.json, CSV files). Uses only the Python standard library."""
+import argparse
 import csv
 import json
 import os
@@ -150,3 +151,21 @@ def wheel_modal_deck(element_size, modes, band=None, block_size=4, export=False)
   </ParameterList>
 </ParameterList>
 """
+
+
+def study_parser(description, work, root):
+    """The command line every study shares: the railfe binary (default build/bin/railfe under
+    `root`), --work (default `work`), --jobs and --replot."""
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("railfe", nargs="?", default=os.path.join(root, "build", "bin", "railfe"))
+    parser.add_argument("--work", default=work)
+    parser.add_argument("--jobs", type=int, default=2)
+    parser.add_argument("--replot", action="store_true",
+                        help="redraw the chart from the CSV file without running railfe")
+    return parser
+
+
+def typed_rows(path, text_columns):
+    """The rows of a study's CSV with every value a float except the `text_columns`."""
+    return [{k: (v if k in text_columns else float(v)) for k, v in row.items()}
+            for row in csv_rows(path)]
