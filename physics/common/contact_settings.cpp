@@ -133,6 +133,12 @@ std::vector<ContactPairSpec> read_contact_pairs(const Teuchos::ParameterList& st
       const auto& times = entry.get<Teuchos::Array<double>>("Patch times");
       pair.patch_times.assign(times.begin(), times.end());
       pair.patch_charts = entry.get<bool>("Patch charts");
+      // only_when() takes choices and flags; an empty time list is checked here.
+      if (pair.patch_times.empty() && !entry.getEntry("Patch charts").isDefault())
+        throw_input_error(deck, where + "/Patch charts",
+                          "is used only with Patch times, which are not given, so the value "
+                          "would be ignored",
+                          "remove 'Patch charts', or give Patch times");
     }
     if (!std::is_sorted(pair.patch_times.begin(), pair.patch_times.end()) ||
         std::any_of(pair.patch_times.begin(), pair.patch_times.end(),
