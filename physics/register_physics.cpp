@@ -6,6 +6,7 @@
 #include "physics/explicit/explicit_module.hpp"
 #include "physics/materials/elastic_material.hpp"
 #include "physics/modal/modal_module.hpp"
+#include "physics/parts/rail_mesh.hpp"
 #include "physics/parts/wheel_mesh.hpp"
 #include "physics/statics/statics_module.hpp"
 
@@ -20,6 +21,7 @@ void register_physics(ModuleRegistry& registry) {
   registry.add_module(wheelset_on_track_module());
   registry.add_module(contact_patch_module());
   registry.add_mesh_generator(wheel_mesh_generator());
+  registry.add_mesh_generator(rail_mesh_generator());
 }
 
 }  // namespace railfe

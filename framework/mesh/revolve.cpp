@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <sstream>
 
@@ -84,27 +85,29 @@ double SectionMesh::area() const {
   return sum;
 }
 
-Mesh revolve(const SectionMesh& section, int n_around) {
-  check_section(section, n_around);
+namespace {
+
+// The sweep shared by revolve and extrude: node i of the section at slice k is node
+// k · section.n_nodes() + i, placed by \p place; slice k's elements join slice k to slice k + 1
+// (to slice 0 after the last when \p closed).
+Mesh sweep(const SectionMesh& section, std::size_t n_slices, bool closed,
+           const std::function<void(std::size_t, double, double, double*)>& place) {
   const GlobalIndex n_section = section.n_nodes();
   Mesh mesh;
   mesh.source = section.source;
-  mesh.coordinates.resize(3 * static_cast<std::size_t>(n_around) * n_section);
-  for (int k = 0; k < n_around; ++k) {
-    const double theta = 2 * kPi * k / n_around;
+  mesh.coordinates.resize(3 * n_slices * n_section);
+  for (std::size_t k = 0; k < n_slices; ++k) {
     for (GlobalIndex i = 0; i < n_section; ++i) {
-      const double r = section.coordinates[2 * i];
-      double* x = &mesh.coordinates[3 * (k * n_section + i)];
-      x[0] = r * std::cos(theta);
-      x[1] = section.coordinates[2 * i + 1];
-      x[2] = r * std::sin(theta);
+      place(k, section.coordinates[2 * i], section.coordinates[2 * i + 1],
+            &mesh.coordinates[3 * (k * n_section + i)]);
     }
   }
+  const std::size_t n_layers = closed ? n_slices : n_slices - 1;
 
-  // Elements block by block, slice by slice; remember where quad q of slice 0 landed.
+  // Elements block by block, layer by layer; remember where quad q of layer 0 landed.
   const auto quads = oriented_quads(section);
-  std::vector<GlobalIndex> first_hex(quads.size());     // global index of quad q's hex at slice 0
-  std::vector<GlobalIndex> slice_stride(quads.size());  // quads in q's block
+  std::vector<GlobalIndex> first_hex(quads.size());     // global index of quad q's hex at layer 0
+  std::vector<GlobalIndex> layer_stride(quads.size());  // quads in q's block
   for (std::size_t b = 0; b < section.blocks.size(); ++b) {
     ElementBlock block;
     block.name = section.blocks[b].name;
@@ -117,10 +120,10 @@ Mesh revolve(const SectionMesh& section, int n_around) {
     const GlobalIndex first = mesh.n_elements();
     for (std::size_t m = 0; m < members.size(); ++m) {
       first_hex[members[m]] = first + static_cast<GlobalIndex>(m);
-      slice_stride[members[m]] = static_cast<GlobalIndex>(members.size());
+      layer_stride[members[m]] = static_cast<GlobalIndex>(members.size());
     }
-    for (int k = 0; k < n_around; ++k) {
-      const GlobalIndex here = k * n_section, next = ((k + 1) % n_around) * n_section;
+    for (std::size_t k = 0; k < n_layers; ++k) {
+      const GlobalIndex here = k * n_section, next = ((k + 1) % n_slices) * n_section;
       for (std::size_t q : members) {
         GlobalIndex nodes[8];
         for (int j = 0; j < 4; ++j) {
@@ -139,7 +142,7 @@ Mesh revolve(const SectionMesh& section, int n_around) {
   const auto edges = boundary_edges(quads);
   for (const auto& group : section.node_sets) {
     NodeSet nodes{group.name, group.id, {}};
-    for (int k = 0; k < n_around; ++k) {
+    for (std::size_t k = 0; k < n_slices; ++k) {
       for (GlobalIndex i : group.nodes)
         nodes.nodes.push_back(k * n_section + i);
     }
@@ -153,13 +156,69 @@ Mesh revolve(const SectionMesh& section, int n_around) {
           !std::binary_search(group.nodes.begin(), group.nodes.end(), s)) {
         continue;
       }
-      for (int k = 0; k < n_around; ++k)
-        sides.sides.push_back({first_hex[q] + k * slice_stride[q], j});
+      for (std::size_t k = 0; k < n_layers; ++k)
+        sides.sides.push_back({first_hex[q] + static_cast<GlobalIndex>(k) * layer_stride[q], j});
     }
     if (!sides.sides.empty())
       mesh.side_sets.push_back(std::move(sides));
   }
+  if (!closed) {
+    // The two end faces: hex face 4 (nodes 0-3) of the first layer, face 5 of the last.
+    const int next_id = static_cast<int>(section.node_sets.size()) + 1;
+    for (int end = 0; end < 2; ++end) {
+      const std::size_t k = end == 0 ? 0 : n_slices - 1;
+      NodeSet nodes{end == 0 ? "start_face" : "end_face", next_id + end, {}};
+      for (GlobalIndex i = 0; i < n_section; ++i)
+        nodes.nodes.push_back(static_cast<GlobalIndex>(k) * n_section + i);
+      mesh.node_sets.push_back(nodes);
+      SideSet sides{nodes.name, nodes.id, {}};
+      const std::size_t layer = end == 0 ? 0 : n_layers - 1;
+      for (std::size_t q = 0; q < quads.size(); ++q)
+        sides.sides.push_back(
+            {first_hex[q] + static_cast<GlobalIndex>(layer) * layer_stride[q], 4 + end});
+      mesh.side_sets.push_back(std::move(sides));
+    }
+  }
   return mesh;
+}
+
+}  // namespace
+
+Mesh revolve(const SectionMesh& section, int n_around) {
+  std::vector<double> angles(n_around > 0 ? n_around : 0);
+  for (int k = 0; k < n_around; ++k)
+    angles[k] = 2 * kPi * k / n_around;
+  return revolve(section, angles);
+}
+
+Mesh revolve(const SectionMesh& section, const std::vector<double>& angles) {
+  check_section(section, static_cast<int>(angles.size()));
+  for (std::size_t k = 0; k < angles.size(); ++k) {
+    const double next = k + 1 < angles.size() ? angles[k + 1] : angles[0] + 2 * kPi;
+    if (!(next > angles[k]) || (k == 0 && angles[0] < 0))
+      throw std::logic_error("railfe: revolve: angles must increase within [0, 2π)");
+  }
+  return sweep(section, angles.size(), true, [&](std::size_t k, double r, double a, double* x) {
+    x[0] = r * std::cos(angles[k]);
+    x[1] = a;
+    x[2] = r * std::sin(angles[k]);
+  });
+}
+
+Mesh extrude(const SectionMesh& section, const std::vector<double>& stations) {
+  if (section.quad_blocks.size() != section.quads.size())
+    throw std::logic_error("railfe: extrude: one block index per quad expected");
+  if (stations.size() < 2)
+    throw std::logic_error("railfe: extrude: at least two stations expected");
+  for (std::size_t k = 0; k + 1 < stations.size(); ++k) {
+    if (!(stations[k + 1] > stations[k]))
+      throw std::logic_error("railfe: extrude: stations must increase");
+  }
+  return sweep(section, stations.size(), false, [&](std::size_t k, double u, double v, double* x) {
+    x[0] = stations[k];
+    x[1] = u;
+    x[2] = v;
+  });
 }
 
 }  // namespace railfe

@@ -1,9 +1,10 @@
 #pragma once
 /// \file
-/// Hex8 meshes of bodies of revolution (wheels, rings, axles), made by revolving a quadrilateral
-/// mesh of the cross-section about the global y axis. Railfe's axes are x along the track, y
-/// lateral and z up, so a wheel turns about y: the section point (r, a) at angle θ lands at
-/// (x, y, z) = (r cos θ, a, r sin θ). The mesh is cyclic-symmetric: every slice is the same.
+/// Hex8 meshes swept from a quadrilateral mesh of a cross-section: bodies of revolution (wheels,
+/// rings, axles) revolved about the global y axis, and prismatic bodies (rails) extruded along
+/// x. Railfe's axes are x along the track, y lateral and z up, so a wheel turns about y: the
+/// section point (r, a) at angle θ lands at (x, y, z) = (r cos θ, a, r sin θ). A revolved mesh
+/// with equal slices is cyclic-symmetric: every slice is the same.
 
 #include <array>
 #include <string>
@@ -46,5 +47,16 @@ struct SectionMesh {
 /// of the exact body's (1 − (2π/n)²/6 to leading order). Throws InputError naming section.source
 /// when a node has r ≤ 0 or \p n_around < 3.
 Mesh revolve(const SectionMesh& section, int n_around);
+
+/// revolve() with slices between the given angles (radians, increasing, the first in [0, 2π) and
+/// the last below the first + 2π), so a body can be refined over an arc: slice k spans
+/// angles[k] to angles[k + 1] (the last closes to angles[0]). Throws InputError as revolve().
+Mesh revolve(const SectionMesh& section, const std::vector<double>& angles);
+
+/// The section swept along x: section point (u, v) at station k goes to (stations[k], u, v), so
+/// a section drawn with u lateral and v up gives a prismatic body along the track. Stations
+/// increase. Blocks, node sets and side sets as revolve(), plus the node and side sets
+/// "start_face" (x = stations.front()) and "end_face" (x = stations.back()).
+Mesh extrude(const SectionMesh& section, const std::vector<double>& stations);
 
 }  // namespace railfe

@@ -12,6 +12,7 @@
 #include "framework/base/parallel.hpp"
 #include "framework/deck/deck.hpp"
 #include "framework/deck/validation.hpp"
+#include "framework/mesh/hex8_topology.hpp"
 #include "framework/mesh/mesh_checks.hpp"
 #include "framework/mesh/mesh_parameters.hpp"
 #include "framework/mesh/mesh_readers.hpp"
@@ -101,6 +102,45 @@ TEST(Revolve, AnnulusVolumeCountsAndSets) {
     for (int k : {0, 3, 4, 7}) {
       const auto x = mesh.node(nodes[k]);
       EXPECT_NEAR(std::hypot(x[0], x[2]), r0, 1e-15);
+    }
+  }
+}
+
+TEST(Revolve, UnequalAnglesGiveTheInscribedPolygonOfThoseChords) {
+  // Slices of 10° over a quarter turn and 30° elsewhere: the volume is the sum of each slice's
+  // chord prism, (r1² − r0²) sin(Δθ)/2 × height.
+  std::vector<double> angles;
+  for (int d = 0; d < 90; d += 10)
+    angles.push_back(d * kPi / 180);
+  for (int d = 90; d < 360; d += 30)
+    angles.push_back(d * kPi / 180);
+  const Mesh mesh = revolve(rectangle(0.2, 0.5, 0, 0.1, 2, 1), angles);
+  EXPECT_NO_THROW(check_mesh(mesh));
+  const double prism = (0.25 - 0.04) / 2 * 0.1;
+  EXPECT_NEAR(volume(mesh), prism * (9 * std::sin(kPi / 18) + 9 * std::sin(kPi / 6)), 1e-15);
+}
+
+TEST(Extrude, PrismVolumeSetsAndEndFaces) {
+  // A 0.3 × 0.4 section swept over graded stations: volume = area × length, every Jacobian
+  // positive (half the quads listed clockwise), the section's set along the whole length, and
+  // the end faces at the first and last stations.
+  const std::vector<double> stations = {-0.1, 0.0, 0.05, 0.07, 0.08, 0.2};
+  const Mesh mesh = extrude(rectangle(0.2, 0.5, -0.1, 0.3, 3, 4), stations);
+  EXPECT_EQ(mesh.n_nodes(), 6 * 4 * 5);
+  EXPECT_EQ(mesh.n_elements(), 5 * 3 * 4);
+  EXPECT_NO_THROW(check_mesh(mesh));
+  EXPECT_NEAR(volume(mesh), 0.3 * 0.4 * 0.3, 1e-15);
+  EXPECT_EQ(mesh.side_set("inner", "", "").sides.size(), 5u * 4u);
+  for (const char* name : {"start_face", "end_face"}) {
+    const double x = name[0] == 's' ? stations.front() : stations.back();
+    EXPECT_EQ(mesh.node_set(name, "", "").nodes.size(), 20u) << name;
+    const auto& sides = mesh.side_set(name, "", "");
+    ASSERT_EQ(sides.sides.size(), 12u) << name;
+    for (const Side& side : sides.sides) {
+      const int b = mesh.block_of(side.element);
+      const GlobalIndex* nodes = mesh.blocks[b].element_nodes(side.element);
+      for (int k = 0; k < 4; ++k)
+        EXPECT_DOUBLE_EQ(mesh.node(nodes[kHex8FaceNodes[side.face][k]])[0], x) << name;
     }
   }
 }

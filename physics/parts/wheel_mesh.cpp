@@ -9,6 +9,7 @@
 #include "contact/geometry/profile_file.hpp"
 #include "framework/base/error.hpp"
 #include "framework/mesh/gmsh_section.hpp"
+#include "framework/mesh/grading.hpp"
 #include "framework/mesh/revolve.hpp"
 
 namespace railfe {
@@ -135,6 +136,21 @@ ParameterSpec wheel_parameters() {
                "Elements around the axis (0 = the fewest, in multiples of 4, that keep them no "
                "longer than Element size at the running circle).",
                Range::at_least(0));
+  spec.real("Tread element size", 0,
+            "Target size of the section's elements at the tread (running surface and flange), "
+            "growing to Element size 20 mm inside it (0 = Element size throughout).",
+            "m", Range::closed(0, 0.1));
+  spec.real_array("Refined arc", {},
+                  "{start, end} angles (degrees, about +y from +x towards +z: the lowest point "
+                  "is at 270) of the arc meshed at Arc element size ({} = none).",
+                  "degree", 0);
+  spec.real("Arc element size", 0.001,
+            "Element length at the running circle inside the Refined arc (only with one).", "m",
+            Range::closed(2e-4, 0.1));
+  spec.real("Growth", 1.25,
+            "Ratio of neighbouring element lengths around the axis between the refined arc and "
+            "the rest (only with a Refined arc).",
+            "", Range::open_closed(1, 2));
   return spec;
 }
 
@@ -156,6 +172,24 @@ WheelDimensions wheel_dimensions(const Teuchos::ParameterList& list, const Deck&
   d.axle_bore_diameter = list.get<double>("Axle bore diameter");
   d.element_size = list.get<double>("Element size");
   d.elements_around = list.get<int>("Elements around");
+  d.tread_element_size = list.get<double>("Tread element size");
+  d.refined_arc = list.get<Teuchos::Array<double>>("Refined arc").toVector();
+  d.arc_element_size = list.get<double>("Arc element size");
+  d.growth = list.get<double>("Growth");
+  if (d.refined_arc.empty()) {
+    for (const char* name : {"Arc element size", "Growth"}) {
+      if (!list.getEntry(name).isDefault())
+        refuse(deck.source, name, "is given without a Refined arc", "a Refined arc with it");
+    }
+  } else if (d.refined_arc.size() != 2 || !(d.refined_arc[1] > d.refined_arc[0]) ||
+             d.refined_arc[1] - d.refined_arc[0] >= 360) {
+    refuse(deck.source, "Refined arc", "is not an arc",
+           "{start, end} in degrees with start < end < start + 360");
+  }
+  if (d.tread_element_size > d.element_size) {
+    refuse(deck.source, "Tread element size", "is coarser than the Element size",
+           "at most the Element size (0 = the Element size)");
+  }
   if (d.elements_around > 0 && d.elements_around < 3) {
     refuse(deck.source, "Elements around", "is " + std::to_string(d.elements_around),
            "0 (automatic) or at least 3");
@@ -234,7 +268,41 @@ int wheel_elements_around(const WheelDimensions& d) {
   return 4 * static_cast<int>(std::ceil(kPi * d.nominal_diameter / (4 * d.element_size)));
 }
 
-std::string wheel_geo_script(const WheelSection& section, double element_size) {
+std::vector<double> wheel_slice_angles(const WheelDimensions& d) {
+  const int n = wheel_elements_around(d);
+  std::vector<double> angles;
+  if (d.refined_arc.empty()) {
+    for (int k = 0; k < n; ++k)
+      angles.push_back(2 * kPi * k / n);
+    return angles;
+  }
+  const double radius = d.nominal_diameter / 2;
+  double start = std::fmod(d.refined_arc[0], 360.0);
+  start = (start < 0 ? start + 360 : start) * kPi / 180;
+  const double arc = (d.refined_arc[1] - d.refined_arc[0]) * kPi / 180;
+  const int m = std::max(1, static_cast<int>(std::ceil(arc * radius / d.arc_element_size - 1e-9)));
+  for (int k = 0; k < m; ++k)
+    angles.push_back(start + arc * k / m);
+  // The rest of the circle, graded from both ends of the arc towards its middle.
+  const double gap = 2 * kPi * radius - arc * radius;
+  const std::vector<double> half =
+      graded_lengths(gap / 2, arc * radius / m, 2 * kPi * radius / n, d.growth);
+  double at = start + arc;
+  for (double length : half) {
+    angles.push_back(at);
+    at += length / radius;
+  }
+  for (auto it = half.rbegin(); it + 1 != half.rend(); ++it) {
+    angles.push_back(at);
+    at += *it / radius;
+  }
+  if (half.size() > 0)
+    angles.push_back(at);
+  return angles;
+}
+
+std::string wheel_geo_script(const WheelSection& section, double element_size,
+                             double tread_element_size) {
   std::ostringstream geo;
   geo << std::setprecision(15);
   geo << "// railfe wheel cross-section: x = r, y = a (m)\nh = " << element_size << ";\n";
@@ -291,12 +359,24 @@ std::string wheel_geo_script(const WheelSection& section, double element_size) {
   // (Gmsh 4.8's quad-specific algorithm 8 crashes on the long tread spline).
   geo << "Mesh.Algorithm = 6;\nMesh.RecombineAll = 1;\nMesh.RecombinationAlgorithm = 3;\n"
          "Mesh.MeshSizeMax = h;\n";
+  if (tread_element_size > 0 && tread_element_size < element_size) {
+    // Sizes graded from the tread's splines inwards (as the rail's from its running surface;
+    // 1.5 x the target for the full-quad subdivision, measured in wheel_mesh_tests).
+    geo << "Field[1] = Distance;\nField[1].CurvesList = {1, 2};\nField[1].NumPointsPerCurve = "
+           "400;\nField[2] = Threshold;\nField[2].InField = 1;\nField[2].SizeMin = "
+        << tread_element_size
+        << ";\nField[2].SizeMax = h;\nField[2].DistMin = " << tread_element_size
+        << ";\nField[2].DistMax = 0.02;\nBackground Field = 2;\n"
+        << "Mesh.MeshSizeFromPoints = 0;\nMesh.MeshSizeFromCurvature = 0;\n"
+           "Mesh.MeshSizeExtendFromBoundary = 0;\n";
+  }
   return geo.str();
 }
 
 Mesh build_wheel_mesh(const WheelDimensions& dimensions, const std::string& source) {
   const WheelSection section = wheel_section(dimensions, source);
-  const int n_around = wheel_elements_around(dimensions);
+  const std::vector<double> angles = wheel_slice_angles(dimensions);
+  const double n_around = static_cast<double>(angles.size());
   // A guard against sizes that would fill the machine: about two quadrangles per h².
   double area = 0;
   for (const auto* outline : {&section.wheel, &section.axle}) {
@@ -306,15 +386,18 @@ Mesh build_wheel_mesh(const WheelDimensions& dimensions, const std::string& sour
       area += 0.5 * (p[0] * q[1] - q[0] * p[1]);
     }
   }
-  const double estimate = 2 * area / std::pow(dimensions.element_size, 2) * n_around;
+  double estimate = 2 * area / std::pow(dimensions.element_size, 2) * n_around;
+  if (dimensions.tread_element_size > 0)  // a band about 20 mm deep under a 0.2 m tread
+    estimate += 2 * 0.2 * 0.02 / std::pow(dimensions.tread_element_size, 2) * n_around;
   if (estimate > 1e8) {
     refuse(source, "Element size",
            "asks for about " + std::to_string(static_cast<long long>(estimate)) + " elements",
            "at most about 1e8 elements");
   }
-  Mesh mesh = revolve(mesh_section_with_gmsh(wheel_geo_script(section, dimensions.element_size),
+  Mesh mesh = revolve(mesh_section_with_gmsh(wheel_geo_script(section, dimensions.element_size,
+                                                              dimensions.tread_element_size),
                                              source + ": Mesh/Wheel"),
-                      n_around);
+                      angles);
   mesh.source = source + ": Mesh/Wheel";
   return mesh;
 }

@@ -46,6 +46,10 @@ struct WheelDimensions {
   double axle_bore_diameter = 0.06;  ///< the axle's axial bore
   double element_size = 0.01;        ///< target size of the section's elements
   int elements_around = 0;           ///< around the axis; 0 = automatic
+  double tread_element_size = 0;     ///< the section's size at the tread; 0 = element_size
+  std::vector<double> refined_arc;   ///< {start, end} (degrees) refined around, or empty
+  double arc_element_size = 0.001;   ///< length at the running circle inside the refined arc
+  double growth = 1.25;              ///< ratio of neighbouring slices between arc and the rest
 };
 
 /// The cross-section in (r, a), each outline counter-clockwise with r as the first coordinate.
@@ -76,10 +80,18 @@ WheelSection wheel_section(const WheelDimensions& dimensions, const std::string&
 /// make the elements at the running circle no longer than the element size.
 int wheel_elements_around(const WheelDimensions& dimensions);
 
-/// The Gmsh script of the section: blocks "wheel" and "axle", node sets "tread" (running
-/// surface and flange), "running_circle", "bore" (without axle) and "axle_end" (the axle's face
-/// in the wheelset centre plane).
-std::string wheel_geo_script(const WheelSection& section, double element_size);
+/// The angles (radians) of the slices: wheel_elements_around() equal ones without a refined
+/// arc; with one, slices of Arc element size (at the running circle) over the arc and lengths
+/// growing by the growth ratio from both its ends up to the size of the equal slices. The
+/// first angle is the arc's start (in [0, 2π)).
+std::vector<double> wheel_slice_angles(const WheelDimensions& dimensions);
+
+/// The Gmsh script of the section (elements of \p tread_element_size at the tread growing to
+/// \p element_size 20 mm inside it, or \p element_size throughout when it is 0): blocks "wheel" and
+/// "axle", node sets "tread" (running surface and flange), "running_circle", "bore" (without axle)
+/// and "axle_end" (the axle's face in the wheelset centre plane).
+std::string wheel_geo_script(const WheelSection& section, double element_size,
+                             double tread_element_size = 0);
 
 /// The wheel mesh (Gmsh runs in a private temporary directory). Throws InputError naming
 /// \p source for bad dimensions and RunError when gmsh is missing.

@@ -2,6 +2,7 @@
 // running circle at the nominal radius, the half axle, refused dimensions, Mesh/Type wheel.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -120,6 +121,53 @@ TEST(WheelMesh, RefusesDimensionsThatMakeNoWheel) {
   d.profile_file = "no_such_profile.prw";
   message = input_error_of([&] { wheel_section(d, "deck.xml"); });
   EXPECT_NE(message.find("not found"), std::string::npos) << message;
+}
+
+TEST(WheelMesh, RefinedArcAndTread) {
+  // 30° refined to 4 mm at the running circle, 30 mm elsewhere; the section 6 mm at the tread.
+  WheelDimensions d = coarse();
+  d.element_size = 0.03;
+  d.tread_element_size = 0.006;
+  d.refined_arc = {255, 285};
+  d.arc_element_size = 0.004;
+  const std::vector<double> angles = wheel_slice_angles(d);
+  const double radius = d.nominal_diameter / 2;
+  EXPECT_NEAR(angles.front(), 255 * kPi / 180, 1e-12);
+  int in_arc = 0;
+  double chord_volume_factor = 0;  // Σ sin(Δθ) / 2π: the slices' chords (see revolve())
+  for (std::size_t k = 0; k < angles.size(); ++k) {
+    const double next = k + 1 < angles.size() ? angles[k + 1] : angles[0] + 2 * kPi;
+    const double length = (next - angles[k]) * radius;
+    EXPECT_LE(length, 0.03 * 1.0001) << k;
+    if (angles[k] < 285 * kPi / 180 - 1e-9) {
+      EXPECT_NEAR(length, 30 * kPi / 180 * radius / 61, 1e-12) << k;
+      ++in_arc;
+    }
+    if (k > 0) {  // neighbours grow by at most the growth ratio (after rescaling)
+      const double previous = (angles[k] - angles[k - 1]) * radius;
+      EXPECT_LT(std::max(length / previous, previous / length), 1.5 * d.growth) << k;
+    }
+    chord_volume_factor += std::sin(next - angles[k]) / (2 * kPi);
+  }
+  EXPECT_EQ(in_arc, 61);  // 30° of a 460 mm radius = 240.9 mm: 61 slices of 3.95 mm
+  const Mesh mesh = build_wheel_mesh(d, "test");
+  EXPECT_NO_THROW(check_mesh(mesh));
+  const double exact = pappus_volume(wheel_section(d, "test").wheel);
+  EXPECT_NEAR(volume(mesh, "wheel") / (chord_volume_factor * exact), 1, 2.5e-3);
+  // The tread's nodes lie at most the tread size apart along the profile (in a slice).
+  std::vector<std::array<double, 2>> tread;
+  for (GlobalIndex node : mesh.node_set("tread", "", "").nodes) {
+    if (node < mesh.n_nodes() / static_cast<GlobalIndex>(angles.size()))  // slice 0
+      tread.push_back({mesh.node(node)[1], std::hypot(mesh.node(node)[0], mesh.node(node)[2])});
+  }
+  std::sort(tread.begin(), tread.end());
+  ASSERT_GT(tread.size(), 20u);
+  double widest = 0;
+  for (std::size_t i = 0; i + 1 < tread.size(); ++i)
+    widest =
+        std::max(widest, std::hypot(tread[i + 1][0] - tread[i][0], tread[i + 1][1] - tread[i][1]));
+  EXPECT_LT(widest, 1.0 * 0.006);
+  EXPECT_GT(widest, 0.5 * 0.006);
 }
 
 TEST(WheelMesh, MeshTypeWheelInADeck) {
