@@ -75,6 +75,13 @@ class DiscreteParts {
   const std::vector<RigidBody>& bodies() const { return bodies_; }
   /// Smallest critical step the springs allow (s), +inf without springs.
   double stable_step() const { return stable_step_; }
+  /// Places the bodies for a run that starts from a statics step's displacement (already in
+  /// \p nodes.u): a body carrying nodes at their mean displacement (its rotation is not
+  /// fitted), a point body at rest where its springs and \p gravity balance (springs to node
+  /// sets pull towards the nodes' mean), so that the run starts in equilibrium. Locked
+  /// translations stay at zero. Collective. Without it (a fresh start) every body starts at zero.
+  void start_from_preload(const NodalArrays& nodes, const std::array<double, 3>& gravity,
+                          const Communicator& comm);
   /// Gives carried nodes the initial velocity of their bodies. The run then calls
   /// add_spring_forces() and correct() with dt = 0 to find the initial accelerations.
   void initialise_nodes(NodalArrays& nodes) const;

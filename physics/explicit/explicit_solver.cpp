@@ -189,8 +189,13 @@ void ExplicitSolver::calibrate_stable_step() {
 
 void ExplicitSolver::initialise(const double* start) {
   const MeshPartition& partition = dofs_.partition();
-  if (start)
+  if (start) {
     std::copy_n(start, n_owned_dofs_, u_.begin());
+    const double scale = (*gravity_function_)(0, 0, 0, 0);
+    const std::array<double, 3> gravity = {
+        scale * settings_.gravity[0], scale * settings_.gravity[1], scale * settings_.gravity[2]};
+    discrete_->start_from_preload(arrays(), gravity, comm_);
+  }
   for (const InitialVelocity& initial : settings_.initial_velocities) {
     for (LocalIndex node : owned_set_nodes(partition, initial.node_set)) {
       double r[3];
