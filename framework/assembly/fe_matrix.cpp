@@ -296,6 +296,25 @@ void FeMatrix::end_assembly() {
   storage_->matrix->endAssembly();
 }
 
+void FeMatrix::add_to_diagonal(const std::vector<double>& values) {
+  auto& matrix = *storage_->matrix;
+  TpetraVector diagonal(matrix.getRowMap());
+  matrix.getLocalDiagCopy(diagonal);
+  const auto current = diagonal.getData();
+  const auto& rows = *matrix.getRowMap();
+  const auto& columns = *matrix.getColMap();
+  // An assembled FECrsMatrix accepts new values only while open for modification.
+  matrix.beginModify();
+  for (std::size_t row = 0; row < values.size(); ++row) {
+    if (values[row] == 0)
+      continue;
+    const LocalIndex column = columns.getLocalElement(rows.getGlobalElement(row));
+    matrix.replaceLocalValues(static_cast<LocalIndex>(row), Teuchos::tuple(column),
+                              Teuchos::tuple(current[row] + values[row]));
+  }
+  matrix.endModify();
+}
+
 Teuchos::RCP<TpetraMatrix> FeMatrix::matrix() const {
   return Teuchos::rcp_implicit_cast<TpetraMatrix>(storage_->matrix);
 }

@@ -35,6 +35,9 @@ class FeMatrix {
   /// Sums shared rows into their owners and completes the matrix (collective).
   void end_assembly();
 
+  /// Adds \p values (one per owned DOF, in the owned map's order) to the diagonal of the
+  /// assembled matrix (after end_assembly(): supports, springs to the ground).
+  void add_to_diagonal(const std::vector<double>& values);
   /// The assembled matrix over the owned DOF map (valid after end_assembly()).
   Teuchos::RCP<TpetraMatrix> matrix() const;
   /// The DOF map it is built on.

@@ -68,6 +68,7 @@ void StaticsStep::check(const CheckContext& context) {
                               "' has the enhanced-strain element (material '" +
                               materials_->of_block(block).name + "')",
                           "'full' with enhanced-strain materials, or Element 'full integration'");
+  springs_ = read_ground_springs(*parameters_, mesh, deck, context.path);
   contact_pairs_ = read_contact_pairs(*parameters_, deck, context.path, ContactUse::statics);
   check_contact_pairs(contact_pairs_, mesh, deck, context.path);
   if (contact_pairs_.empty()) {
@@ -104,6 +105,8 @@ void StaticsStep::run(StepContext& context) {
   Progress assembly_progress =
       context.progress("stiffness assembly", dofs.partition().n_local_elements());
   assemble_elastic_stiffness(stiffness, *materials_, &assembly_progress, one_point_kappa_);
+  if (!springs_.empty())
+    stiffness.add_to_diagonal(ground_spring_diagonal(springs_, dofs));
   assembly_progress.finish();
   const double assembly_seconds = clock.seconds();
 
@@ -161,8 +164,13 @@ void StaticsStep::run(StepContext& context) {
   TpetraVector reactions(dofs.owned_map());
   constraints.reactions(*u, reactions);
 
-  // Equilibrium: applied loads and reactions must cancel; their work gives the strain energy.
-  const auto reaction_sum = component_sums(reactions, comm);
+  // Equilibrium: applied loads, reactions and spring forces must cancel; the work of loads and
+  // reactions gives the strain energy (the springs' included).
+  auto reaction_sum = component_sums(reactions, comm);
+  const auto spring_forces = ground_spring_forces(springs_, dofs, *u);
+  for (const auto& force : spring_forces)
+    for (int d = 0; d < 3; ++d)
+      reaction_sum[d] += force[d];
   double imbalance = 0, scale = 0;
   for (int d = 0; d < 3; ++d) {
     imbalance += std::pow(applied[d] + reaction_sum[d], 2);
@@ -209,6 +217,7 @@ void StaticsStep::run(StepContext& context) {
 
   start_phase();
   write_results(context, dofs, *u, reactions, contact.get());
+  write_springs(context, spring_forces);
   if (contact)
     write_contact(context, *contact);
   summary.add(section, "time: output", clock.seconds(), "s");
@@ -305,6 +314,18 @@ void StaticsStep::write_results(StepContext& context, const DofMap& dofs, const 
       root);
   writer.write_step(1.0, nodal, element);
   writer.close();
+}
+
+void StaticsStep::write_springs(StepContext& context,
+                                const std::vector<std::array<double, 3>>& forces) const {
+  if (springs_.empty())
+    return;
+  CsvWriter file(context.output.staging_path(context.step_name + "_springs.csv"),
+                 {"spring", "Fx_N", "Fy_N", "Fz_N"}, context.model.comm().is_root());
+  for (std::size_t s = 0; s < springs_.size(); ++s) {
+    file.write_row({springs_[s].name, CsvWriter::format(forces[s][0]),
+                    CsvWriter::format(forces[s][1]), CsvWriter::format(forces[s][2])});
+  }
 }
 
 void StaticsStep::write_contact(StepContext& context, const ContactPairs& contact) const {

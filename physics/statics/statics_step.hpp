@@ -10,6 +10,7 @@
 #include "physics/common/contact_settings.hpp"
 #include "physics/common/solid_conditions.hpp"
 #include "physics/materials/elastic_material.hpp"
+#include "physics/statics/ground_springs.hpp"
 
 namespace railfe {
 
@@ -29,12 +30,14 @@ class StaticsStep : public AnalysisStep {
   void write_results(StepContext& context, const DofMap& dofs, const TpetraVector& u,
                      const TpetraVector& reactions, const ContactPairs* contact) const;
   void write_contact(StepContext& context, const ContactPairs& contact) const;
+  void write_springs(StepContext& context, const std::vector<std::array<double, 3>>& forces) const;
 
   const Teuchos::ParameterList* parameters_;
   SolidConditions conditions_;
   std::optional<MaterialTable> materials_;
   std::vector<std::vector<std::pair<GlobalIndex, GlobalIndex>>> tie_pairs_;
   std::vector<ContactPairSpec> contact_pairs_;
+  std::vector<GroundSpring> springs_;
   double one_point_kappa_ = -1;  // ≥ 0: the one-point hex8 with this hourglass coefficient
 };
 
