@@ -42,9 +42,11 @@ void add_solid_condition_parameters(ParameterSpec& spec) {
   tie.real("Tolerance", 1e-8, "Largest distance between paired nodes.", "m", Range::positive());
   spec.named_sublists("Ties", tie, "Tied node sets (multi-point constraints).");
 
-  ParameterSpec probe("Reports the mean displacement of a node set.");
+  ParameterSpec probe(
+      "Reports the mean displacement and the mean stress of a node set (the stress at each node: "
+      "the Gauss-point stresses of the elements around it extrapolated to the node and averaged).");
   probe.required_text("Node set", "The nodes averaged.");
-  spec.named_sublists("Probes", probe, "Displacements written to <step>_probes.csv.");
+  spec.named_sublists("Probes", probe, "Displacements and stresses written to <step>_probes.csv.");
 }
 
 std::vector<int> parse_components(const std::string& letters, const std::string& deck,

@@ -155,8 +155,13 @@ double hex8_volume(const double x[8][3]) {
 
 void hex8_centre_stress(const double x[8][3], const double* u, const LameConstants& material,
                         double stress[6]) {
+  hex8_point_stress(x, u, material, hex8_gauss_table().centre, stress);
+}
+
+void hex8_point_stress(const double x[8][3], const double* u, const LameConstants& material,
+                       const double dN_ref[3][8], double stress[6]) {
   double gradient[3][8];
-  hex8_gradients(x, hex8_gauss_table().centre, gradient);
+  hex8_gradients(x, dN_ref, gradient);
   double du[3][3] = {};  // du[i][j] = ∂u_i/∂x_j
   for (int a = 0; a < 8; ++a) {
     for (int i = 0; i < 3; ++i) {

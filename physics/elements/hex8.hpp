@@ -38,6 +38,11 @@ double hex8_volume(const double x[8][3]);
 void hex8_centre_stress(const double x[8][3], const double* u, const LameConstants& material,
                         double stress[6]);
 
+/// Stress like hex8_centre_stress() at the point where the reference shape-function derivatives
+/// are \p dN_ref [3][8] (∂N_a/∂ξ_k), e.g. a Gauss point of hex8_gauss_table().
+void hex8_point_stress(const double x[8][3], const double* u, const LameConstants& material,
+                       const double dN_ref[3][8], double stress[6]);
+
 /// Consistent nodal forces (4 face nodes × 3, in kHex8FaceNodes order) of a uniform traction
 /// \p traction (Pa) on face \p face: f = ∫ Nᵀ t dA (2×2 Gauss).
 void hex8_face_traction(const double x[8][3], int face, const double traction[3],

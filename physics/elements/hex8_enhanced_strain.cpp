@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 
+#include <array>
 #include <cmath>
 
 #include "framework/mesh/hex8_shape.hpp"
@@ -33,11 +34,16 @@ Voigt elasticity(const LameConstants& material) {
   return C;
 }
 
-}  // namespace
+// What the condensation and the stress recovery both need: K_uα (24 × 9), K_αα (9 × 9) and the
+// enhanced strain-parameter matrix G (6 × 9) at each Gauss point.
+struct EnhancedParts {
+  Eigen::Matrix<double, 24, kModes> coupling = Eigen::Matrix<double, 24, kModes>::Zero();
+  Eigen::Matrix<double, kModes, kModes> internal = Eigen::Matrix<double, kModes, kModes>::Zero();
+  std::array<Eigen::Matrix<double, 6, kModes>, 8> G;
+};
 
-void hex8_enhanced_strain_stiffness(const double x[8][3], const LameConstants& material,
-                                    double* stiffness) {
-  hex8_stiffness(x, material, stiffness);
+EnhancedParts enhanced_parts(const double x[8][3], const LameConstants& material) {
+  EnhancedParts parts;
   const Hex8GaussTable& table = hex8_gauss_table();
   Eigen::Matrix3d centre_jacobian = Eigen::Matrix3d::Zero();  // ∂x_d/∂ξ_k at ξ = 0
   for (int a = 0; a < 8; ++a) {
@@ -52,15 +58,13 @@ void hex8_enhanced_strain_stiffness(const double x[8][3], const LameConstants& m
   const Eigen::Matrix3d inverse = centre_jacobian.inverse();
   const Voigt C = elasticity(material);
   const double g = 1.0 / std::sqrt(3.0);
-  Eigen::Matrix<double, 24, kModes> coupling = Eigen::Matrix<double, 24, kModes>::Zero();
-  Eigen::Matrix<double, kModes, kModes> internal = Eigen::Matrix<double, kModes, kModes>::Zero();
   double gradient[3][8];
   for (int q = 0; q < 8; ++q) {
     const double det = hex8_gradients(x, table.dN[q], gradient);
     const double xi[3] = {g * kHex8NodeReference[q][0], g * kHex8NodeReference[q][1],
                           g * kHex8NodeReference[q][2]};
     // Enhanced strain-parameter matrix (6 × 9), scaled by det J₀ / det J so that ∫ G dV = 0.
-    Eigen::Matrix<double, 6, kModes> G;
+    Eigen::Matrix<double, 6, kModes>& G = parts.G[q];
     for (int m = 0; m < kModes; ++m) {
       const int k = kModeEntry[m][0], l = kModeEntry[m][1];
       const double value = xi[kModeEntry[m][2]] * centre_det / det;
@@ -85,16 +89,40 @@ void hex8_enhanced_strain_stiffness(const double x[8][3], const LameConstants& m
       B(5, 3 * a + 2) = gx;
     }
     const Eigen::Matrix<double, 6, kModes> stress = det * (C * G);
-    coupling.noalias() += B.transpose() * stress;
-    internal.noalias() += G.transpose() * stress;
+    parts.coupling.noalias() += B.transpose() * stress;
+    parts.internal.noalias() += G.transpose() * stress;
   }
+  return parts;
+}
+
+}  // namespace
+
+void hex8_enhanced_strain_stiffness(const double x[8][3], const LameConstants& material,
+                                    double* stiffness) {
+  hex8_stiffness(x, material, stiffness);
+  const EnhancedParts parts = enhanced_parts(x, material);
   // Static condensation of the internal modes (K_αα is symmetric positive definite for a valid
   // element).
-  const Eigen::Matrix<double, kModes, 24> solved = internal.llt().solve(coupling.transpose());
+  const Eigen::Matrix<double, kModes, 24> solved =
+      parts.internal.llt().solve(parts.coupling.transpose());
   Eigen::Map<Eigen::Matrix<double, 24, 24, Eigen::RowMajor>> K(stiffness);
-  const Eigen::Matrix<double, 24, 24> condensed = coupling * solved;
+  const Eigen::Matrix<double, 24, 24> condensed = parts.coupling * solved;
   // The product is symmetric only to round-off; CG and Cholesky want it exactly.
   K -= 0.5 * (condensed + condensed.transpose());
+}
+
+void hex8_enhanced_strains(const double x[8][3], const double* u, const LameConstants& material,
+                           double strain[8][6]) {
+  const EnhancedParts parts = enhanced_parts(x, material);
+  const Eigen::Map<const Eigen::Matrix<double, 24, 1>> displacement(u);
+  // The internal modes make the element's residual orthogonal to them: K_αu u + K_αα α = 0.
+  const Eigen::Matrix<double, kModes, 1> alpha =
+      -parts.internal.llt().solve(parts.coupling.transpose() * displacement);
+  for (int q = 0; q < 8; ++q) {
+    const Eigen::Matrix<double, 6, 1> enhanced = parts.G[q] * alpha;
+    for (int c = 0; c < 6; ++c)
+      strain[q][c] = enhanced(c);
+  }
 }
 
 }  // namespace railfe

@@ -18,4 +18,11 @@ namespace railfe {
 void hex8_enhanced_strain_stiffness(const double x[8][3], const LameConstants& material,
                                     double* stiffness);
 
+/// The enhanced part of the strain (engineering shear, order xx, yy, zz, xy, yz, zx) at the 2×2×2
+/// Gauss points (in kHex8NodeReference order) for nodal displacements \p u (24): G α with the
+/// internal parameters α recovered from u as the condensation eliminated them. Add it to the
+/// compatible strain B u for this element's strain.
+void hex8_enhanced_strains(const double x[8][3], const double* u, const LameConstants& material,
+                           double strain[8][6]);
+
 }  // namespace railfe

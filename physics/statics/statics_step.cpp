@@ -15,6 +15,7 @@
 #include "framework/output/field_gather.hpp"
 #include "physics/common/contact_pairs.hpp"
 #include "physics/common/contact_tables.hpp"
+#include "physics/common/node_set_stresses.hpp"
 #include "physics/common/solid_assembly.hpp"
 #include "physics/statics/contact_newton.hpp"
 
@@ -237,9 +238,20 @@ void StaticsStep::write_results(StepContext& context, const DofMap& dofs, const 
   const auto r_data = reactions.getData();
   const LocalIndex n_owned = partition.n_owned_nodes();
 
+  TpetraVector u_overlap(dofs.overlap_map());
+  dofs.owned_to_overlap(u, u_overlap);
+  const double* u_local = u_overlap.getData().getRawPtr();
+  std::vector<std::vector<GlobalIndex>> probe_sets;
+  for (const auto& probe : conditions_.probes)
+    probe_sets.push_back(mesh.node_set(probe.node_set, "", "").nodes);
+  const auto probe_stresses =
+      node_set_stresses(partition, *materials_, u_local, probe_sets, one_point_kappa_ >= 0);
   CsvWriter probes(context.output.staging_path(name + "_probes.csv"),
-                   {"probe", "nodes", "ux_m", "uy_m", "uz_m"}, root);
-  for (const auto& probe : conditions_.probes) {
+                   {"probe", "nodes", "ux_m", "uy_m", "uz_m", "sxx_Pa", "syy_Pa", "szz_Pa",
+                    "sxy_Pa", "syz_Pa", "szx_Pa"},
+                   root);
+  for (std::size_t p = 0; p < conditions_.probes.size(); ++p) {
+    const auto& probe = conditions_.probes[p];
     double sum[3] = {0, 0, 0};
     long long count = 0;
     for (GlobalIndex node : mesh.node_set(probe.node_set, "", "").nodes) {
@@ -254,6 +266,8 @@ void StaticsStep::write_results(StepContext& context, const DofMap& dofs, const 
     std::vector<std::string> row{probe.name, std::to_string(static_cast<long long>(total))};
     for (int d = 0; d < 3; ++d)
       row.push_back(CsvWriter::format(comm.sum(sum[d]) / total));
+    for (int c = 0; c < 6; ++c)
+      row.push_back(CsvWriter::format(probe_stresses[6 * p + c]));
     probes.write_row(row);
   }
 
@@ -276,9 +290,7 @@ void StaticsStep::write_results(StepContext& context, const DofMap& dofs, const 
 
   if (!context.model.deck().parameters->sublist("Output").get<bool>("Exodus"))
     return;
-  TpetraVector u_overlap(dofs.overlap_map());
-  dofs.owned_to_overlap(u, u_overlap);
-  const auto stresses = element_stresses(partition, *materials_, u_overlap.getData().getRawPtr());
+  const auto stresses = element_stresses(partition, *materials_, u_local);
   std::vector<double> element_values;
   element_values.reserve(7 * stresses.size() / 6);
   for (std::size_t e = 0; e < stresses.size() / 6; ++e) {

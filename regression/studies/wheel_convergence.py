@@ -2,17 +2,19 @@
 """Speed against accuracy of the wheel's modes for both hex8 formulations: the default wheel
 (S1002 tread, bore fixed on a rigid axle) at several element sizes with the fully integrated
 hex8 and with the enhanced-strain hex8 (Materials/.../Element), its first N elastic modes
-(default 30) against the Richardson extrapolation (O(h^2)) of the two finest fully integrated
-meshes, charted against DOFs and wall time. The deck's default density
-(inputs/scenes/wheel_modes.xml) is chosen from it.
+(default 30) against the Richardson extrapolation (O(h^2)) of the two finest meshes of one
+formulation (--reference; the docs use the enhanced 14 and 10 mm runs), charted against DOFs
+and wall time. The scene's density (inputs/scenes/wheel_modes.xml) is chosen from it.
 
     nice /usr/bin/python3 regression/studies/wheel_convergence.py build/bin/railfe \\
-        [--sizes ...] [--enhanced-sizes ...] [--reference-csv CSV]
+        [--sizes ...] [--enhanced-sizes ...] [--reference ELEMENT | --reference-csv CSV] [--reuse]
 
-The 10 mm run takes minutes; --reference-csv takes the extrapolated frequencies from an
-earlier run's table instead (docs/data/wheel_convergence_reference.csv: the fully integrated
-series 30/20/14/10 mm and its extrapolation), after checking that the coarsest fully integrated
-run reproduces that table's column of the same size (same mesh, same model).
+The 10 mm runs take minutes; --reuse takes the runs already in docs/data/wheel_convergence*.csv
+and runs only the others; --reference-csv takes the extrapolated frequencies from an earlier
+run's table instead (docs/data/wheel_convergence_reference.csv: the fully integrated series
+30/20/14/10 mm and its extrapolation), after checking that the coarsest fully integrated run
+reproduces that table's column of the same size (same mesh, same model). The defaults are the
+docs' figures.
 
 Writes docs/data/wheel_convergence.csv, docs/data/wheel_convergence_modes.csv and
 docs/img/wheel_convergence.png.
@@ -57,21 +59,43 @@ def run(railfe, element, size, modes, work):
             "wall": wall, "frequencies": frequencies}
 
 
+def stored_runs(modes):
+    """The runs of docs/data/wheel_convergence.csv with their frequencies from
+    wheel_convergence_modes.csv, keyed by (element, size)."""
+    data = os.path.join(ROOT, "docs", "data")
+    table = csv_rows(os.path.join(data, "wheel_convergence_modes.csv"))[:modes]
+    runs = {}
+    for row in csv_rows(os.path.join(data, "wheel_convergence.csv")):
+        element, size = row["element"], float(row["element_size_m"])
+        column = f"f_hz_{element.replace(' ', '_')}_{row['element_size_m']}m"
+        runs[(element, size)] = {"element": element, "size": size, "dofs": int(row["dofs"]),
+                                 "wall": float(row["wall_s"]),
+                                 "frequencies": np.array([float(m[column]) for m in table])}
+    return runs
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("railfe")
-    parser.add_argument("--sizes", type=float, nargs="+", default=[0.03, 0.02, 0.014, 0.01],
-                        help="element sizes of the fully integrated runs (the two finest give "
-                        "the reference)")
-    parser.add_argument("--enhanced-sizes", type=float, nargs="+", default=[0.04, 0.03, 0.02],
+    parser.add_argument("--sizes", type=float, nargs="+", default=[0.03, 0.02, 0.014],
+                        help="element sizes of the fully integrated runs")
+    parser.add_argument("--enhanced-sizes", type=float, nargs="+",
+                        default=[0.04, 0.03, 0.02, 0.014, 0.01],
                         help="element sizes of the enhanced-strain runs")
     parser.add_argument("--reference-csv", help="take the extrapolated frequencies from here")
+    parser.add_argument("--reference", choices=(FULL, ENHANCED), default=ENHANCED,
+                        help="whose two finest runs give the O(h^2) extrapolated reference")
+    parser.add_argument("--reuse", action="store_true",
+                        help="take the runs stored in docs/data/wheel_convergence*.csv and run "
+                        "only the sizes not stored there (their wall times were measured then)")
     parser.add_argument("--modes", type=int, default=30)
     parser.add_argument("--work", default="/tmp/railfe_wheel_convergence")
     args = parser.parse_args()
     railfe = os.path.abspath(args.railfe)
-    runs = [run(railfe, FULL, size, args.modes, args.work) for size in args.sizes]
-    runs += [run(railfe, ENHANCED, size, args.modes, args.work) for size in args.enhanced_sizes]
+    stored = stored_runs(args.modes) if args.reuse else {}
+    runs = [stored.get((element, size)) or run(railfe, element, size, args.modes, args.work)
+            for element, sizes in ((FULL, args.sizes), (ENHANCED, args.enhanced_sizes))
+            for size in sizes]
     full = [r for r in runs if r["element"] == FULL]
     if args.reference_csv:
         table = csv_rows(args.reference_csv)
@@ -83,7 +107,8 @@ def main():
         if drift > 1e-6:
             raise SystemExit("the stored reference is from another model: run without it")
     else:
-        (h1, f1), (h2, f2) = [(r["size"], r["frequencies"]) for r in full[-2:]]
+        finest = [r for r in runs if r["element"] == args.reference][-2:]
+        (h1, f1), (h2, f2) = [(r["size"], r["frequencies"]) for r in finest]
         reference = f2 - (f1 - f2) * h2 ** 2 / (h1 ** 2 - h2 ** 2)
     for r in runs:
         error = np.abs(r["frequencies"] - reference) / reference
@@ -117,8 +142,11 @@ def main():
         ax.set_ylabel("frequency error (%)")
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=7)
-    fig.suptitle("wheel modes: error against the extrapolated frequencies "
-                 "(hex8 formulations, consistent mass)")
+    source = (f"the stored {args.reference_csv}" if args.reference_csv else
+              f"the O(h^2) extrapolation of the {args.reference} "
+              f"{1000 * finest[0]['size']:g} and {1000 * finest[1]['size']:g} mm runs")
+    fig.suptitle(f"wheel modes (hex8 formulations, consistent mass): error against {source}",
+                 fontsize=10)
     fig.tight_layout()
     fig.savefig(os.path.join(ROOT, "docs", "img", "wheel_convergence.png"), dpi=120)
     for r in runs:
