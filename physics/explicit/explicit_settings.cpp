@@ -175,6 +175,12 @@ ParameterSpec explicit_parameters() {
             "the loads so far). A run stops only when both conditions hold.",
             "", Range::open(1, 1e300));
   spec.real("Rayleigh mass damping", 0.0, "alpha of C = alpha M.", "1/s", Range::non_negative());
+  spec.real("Mass scaling step", 0.0,
+            "Selective mass scaling (LS-DYNA's DT2MS): every element whose stable step is below "
+            "this one gets its density raised by (this / its step)^2, so that its step reaches "
+            "it (0 = none). The mass added is reported in the summary, with a warning above 1 % "
+            "of the total; it slows the scaled elements' waves by the square root of the factor.",
+            "s", Range::non_negative());
   spec.text("Start from", "",
             "A previous statics step whose displacements start this one (preload), or ''.");
   ParameterSpec solid("The hex8 formulation (total-Lagrangian St. Venant-Kirchhoff).");
@@ -439,6 +445,7 @@ ExplicitSettings read_explicit_settings(const Teuchos::ParameterList& step, cons
   settings.energy_error_limit = step.get<double>("Energy error limit");
   settings.energy_growth_limit = step.get<double>("Energy growth limit");
   settings.rayleigh_mass = step.get<double>("Rayleigh mass damping");
+  settings.mass_scaling_step = step.get<double>("Mass scaling step");
   settings.start_from = step.get<std::string>("Start from");
   const auto& solid = step.sublist("Solid");
   settings.kernel.full_integration = solid.get<std::string>("Integration") == "full";

@@ -123,6 +123,7 @@ struct ExplicitSettings {
   double energy_error_limit = 0.1;        ///< blow-up: |energy error| above it, and...
   double energy_growth_limit = 100;       ///< ...stored + dissipated above this x the put in
   double rayleigh_mass = 0;               ///< α of C = α M (1/s)
+  double mass_scaling_step = 0;           ///< elements below this step are made heavier (s); 0 off
   SolidKernelSettings kernel;             ///< hex8 formulation
   std::string start_from;                 ///< a previous step whose displacement starts this one
   std::vector<TimedLoad> loads;           ///< nodal forces and surface loads

@@ -18,17 +18,22 @@ namespace railfe {
 
 namespace {
 
-// Lumped (row-sum) masses of the hex8 elements, 3 entries per local node (local sums only).
-std::vector<double> element_masses(const MeshPartition& partition, const MaterialTable& materials) {
+// Lumped (row-sum) masses of the hex8 elements, 3 entries per local node (local sums only),
+// each element's density times its factor in \p density_scale (by the partition's element order).
+std::vector<double> element_masses(const MeshPartition& partition, const MaterialTable& materials,
+                                   const std::vector<double>& density_scale) {
   std::vector<double> masses(3 * static_cast<std::size_t>(partition.n_local_nodes()), 0.0);
   double x[8][3], mass[24 * 24];
+  LocalIndex index = 0;
   for (const LocalBlock& block : partition.blocks()) {
-    if (partition.mesh().blocks[block.block].type != ElementType::hex8)
+    if (partition.mesh().blocks[block.block].type != ElementType::hex8) {
+      index += block.n_elements();
       continue;
+    }
     const double density = materials.of_block(block.block).density;
-    for (LocalIndex e = 0; e < block.n_elements(); ++e) {
+    for (LocalIndex e = 0; e < block.n_elements(); ++e, ++index) {
       element_coordinates(partition, block, e, x);
-      hex8_mass(x, density, true, mass);
+      hex8_mass(x, density * density_scale[index], true, mass);
       const LocalIndex* nodes = &block.connectivity[block.offsets[e]];
       for (int a = 0; a < 8; ++a)
         for (int d = 0; d < 3; ++d)
@@ -58,7 +63,8 @@ ExplicitSolver::ExplicitSolver(const ExplicitSettings& settings, const DofMap& d
 
   elements_ = build_solid_elements(partition, materials, settings.kernel);
   ghosts_ = std::make_unique<GhostExchange>(dofs);
-  std::vector<double> masses = element_masses(partition, materials);
+  const std::vector<double> density_scale = scale_small_elements(settings.mass_scaling_step);
+  std::vector<double> masses = element_masses(partition, materials, density_scale);
   ghosts_->sum_into_owners(masses.data());
   mass_.resize(n_owned_);
   for (LocalIndex node = 0; node < n_owned_; ++node)
@@ -129,6 +135,32 @@ void ExplicitSolver::evaluate_forces(double time, double dt) {
   solid_stable_step_ =
       std::min(comm_.min(totals_.stable_step) * step_calibration_, discrete_->stable_step());
   stable_step_ = std::min(solid_stable_step_, contact_->stable_step());
+}
+
+std::vector<double> ExplicitSolver::scale_small_elements(double target) {
+  std::vector<double> scale(dofs_.partition().n_local_elements(), 1.0);
+  if (!(target > 0))
+    return scale;
+  double added_volume_mass = 0, scaled = 0;
+  for (LocalIndex e = 0; e < elements_.n_elements; ++e) {
+    const double step = elements_.stable_step[e];
+    if (!(step < target))
+      continue;
+    // ρ → s ρ: c_P and every hourglass frequency fall by √s, so the step rises by √s to the
+    // target; a viscous hourglass force (κ ρ c) grows by √s, a stiffness one is unchanged.
+    const double s = (target / step) * (target / step), root = std::sqrt(s);
+    added_volume_mass += (s - 1) * elements_.density[e] * elements_.volume[e];
+    elements_.density[e] *= s;
+    elements_.wave_speed[e] /= root;
+    elements_.stable_step[e] *= root;
+    if (settings_.kernel.hourglass == HourglassForm::viscous)
+      elements_.hourglass_scale[e] *= root;
+    scale[elements_.partition_index[e]] = s;
+    ++scaled;
+  }
+  mass_scaling_.added_mass = comm_.sum(added_volume_mass);
+  mass_scaling_.scaled_elements = static_cast<long long>(comm_.sum(scaled));
+  return scale;
 }
 
 double ExplicitSolver::contact_stable_step() const {

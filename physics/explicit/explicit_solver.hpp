@@ -98,6 +98,13 @@ class ExplicitSolver {
   const SolidElements& elements() const { return elements_; }
   /// Total mass of the model (kg, summed over ranks).
   double total_mass() const;
+  /// What selective mass scaling (Mass scaling step) did, summed over ranks.
+  struct MassScaling {
+    double added_mass = 0;          ///< kg
+    long long scaled_elements = 0;  ///< elements made heavier
+  };
+  /// The mass scaling applied at set-up.
+  const MassScaling& mass_scaling() const { return mass_scaling_; }
   /// Kinetic, internal and hourglass energy at the start (the balance's reference).
   double initial_energy() const { return initial_energy_; }
   /// The state to checkpoint.
@@ -121,6 +128,10 @@ class ExplicitSolver {
   std::vector<double> applied_;            // applied forces at the end of the step (owned)
   std::vector<double> external_;           // applied forces at the start of the step (owned)
   std::vector<double> previous_reaction_;  // support reaction per prescribed DOF
+  // Raises the density of elements whose stable step is below \p target (0: none) and returns
+  // each local element's factor (partition order); fills mass_scaling_.
+  std::vector<double> scale_small_elements(double target);
+  MassScaling mass_scaling_;
   SolidElements elements_;
   std::unique_ptr<GhostExchange> ghosts_;
   std::unique_ptr<TimedLoads> loads_;

@@ -20,6 +20,17 @@ namespace railfe {
 
 namespace {
 
+// Mass scaling that adds more than 1 % of the model's mass changes its dynamics, not only its step.
+std::string mass_scaling_warning(const ExplicitSolver& solver) {
+  std::ostringstream text;
+  text.precision(3);
+  text << "Mass scaling step added " << solver.mass_scaling().added_mass << " kg to "
+       << solver.mass_scaling().scaled_elements << " elements, "
+       << 100 * solver.mass_scaling().added_mass / solver.total_mass()
+       << " % of the model's mass: it changes the dynamics (lower the Mass scaling step)";
+  return text.str();
+}
+
 std::string seconds_text(double value) {
   std::ostringstream text;
   text.precision(4);
@@ -195,6 +206,9 @@ void ExplicitStep::run(StepContext& context) {
     start = preload->getData().getRawPtr();
   }
   solver.initialise(start);
+  if (solver.mass_scaling().added_mass > 0.01 * solver.total_mass() && comm.is_root())
+    std::fprintf(stderr, "railfe: warning: %s: %s\n", path.c_str(),
+                 mass_scaling_warning(solver).c_str());
   const double initial_stable_step = solver.stable_step();
   if (!(initial_stable_step > 0) || !std::isfinite(initial_stable_step))
     throw RunError(path + ": no stable step could be found (degenerate elements or no mass?)");
@@ -303,6 +317,13 @@ void ExplicitStep::run(StepContext& context) {
   summary.add(section, "rigid bodies", static_cast<double>(settings.bodies.size()));
   summary.add(section, "spring-dampers", static_cast<double>(settings.springs.size()));
   summary.add(section, "total mass", solver.total_mass(), "kg");
+  if (settings.mass_scaling_step > 0) {
+    summary.add(section, "mass scaling: elements made heavier",
+                static_cast<double>(solver.mass_scaling().scaled_elements));
+    summary.add(section, "mass scaling: mass added", solver.mass_scaling().added_mass, "kg");
+    if (solver.mass_scaling().added_mass > 0.01 * solver.total_mass())
+      summary.add(section, "warning", mass_scaling_warning(solver));
+  }
   summary.add(
       section, "formulation",
       std::string(settings.kernel.full_integration ? "hex8 full integration" : "hex8 one point") +
