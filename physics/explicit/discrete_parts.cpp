@@ -90,6 +90,14 @@ DiscreteParts::DiscreteParts(const ExplicitSettings& settings, const MeshPartiti
       if (body.fixed[3 + d])
         body.angular_velocity[d] = 0;
     }
+    for (int d = 0; d < 3; ++d) {
+      if (spec.motion[d].empty())
+        continue;
+      body.motion[d] = static_cast<int>(motion_functions_.size());
+      motion_functions_.emplace_back(spec.motion[d], deck,
+                                     where + "/Motion " + std::string(1, "xyz"[d]));
+      body.velocity[d] = motion_at(body.motion[d], 0, 0)[1];
+    }
     const std::array<bool, 3> locked =
         body.rotates ? std::array<bool, 3>{body.fixed[3], body.fixed[4], body.fixed[5]}
                      : std::array<bool, 3>{true, true, true};
@@ -173,10 +181,18 @@ void DiscreteParts::initialise_nodes(NodalArrays& nodes) const {
 void DiscreteParts::predict(double dt, NodalArrays& nodes) {
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     RigidBody& body = bodies_[b];
-    const Eigen::Vector3d step = dt * body.velocity + 0.5 * dt * dt * body.acceleration;
+    Eigen::Vector3d step = dt * body.velocity + 0.5 * dt * dt * body.acceleration;
+    body.velocity += 0.5 * dt * body.acceleration;
+    for (int d = 0; d < 3; ++d) {
+      if (body.motion[d] < 0)
+        continue;
+      const auto next = motion_at(body.motion[d], time_ + dt, dt);
+      const double start = motion_functions_[body.motion[d]](0, 0, 0, 0);
+      step[d] = body.motion_origin[d] + next[0] - start - body.displacement[d];
+      body.velocity[d] = next[1];
+    }
     body.displacement += step;
     body_step_[b] = step;
-    body.velocity += 0.5 * dt * body.acceleration;
     if (body.rotates) {
       // Kick with the last step's moment, then the free rotation; the nodes move with the
       // angular velocity of the kicked momentum at the new orientation.
@@ -244,8 +260,18 @@ void DiscreteParts::add_body_force(const Spring& spring, const Eigen::Vector3d& 
     bodies_[spring.b.body].force -= force_on_a;
 }
 
+std::array<double, 3> DiscreteParts::motion_at(int f, double t, double dt) const {
+  // Derivatives by central differences over a step well below the time step (or 1e-7 s).
+  const double h = dt > 0 ? 1e-3 * dt : 1e-7;
+  const Expression& motion = motion_functions_[f];
+  const double before = motion(0, 0, 0, t - h), at = motion(0, 0, 0, t),
+               after = motion(0, 0, 0, t + h);
+  return {at, (after - before) / (2 * h), (after - 2 * at + before) / (h * h)};
+}
+
 void DiscreteParts::correct(double time, double dt, const std::array<double, 3>& gravity,
                             NodalArrays& nodes, const Communicator& comm) {
+  time_ = time;
   if (bodies_.empty())
     return;
   // Springs between bodies, or from a body to the ground, are added once (on rank 0) before the
@@ -303,9 +329,18 @@ void DiscreteParts::correct(double time, double dt, const std::array<double, 3>&
     previous_own_moment_[b] = own_moment;
 
     body.acceleration = body.force / body.mass;
-    for (int d = 0; d < 3; ++d)
+    for (int d = 0; d < 3; ++d) {
       if (body.fixed[d])
         body.acceleration[d] = 0;
+      if (body.motion[d] < 0)
+        continue;
+      // The motion's own acceleration; the force that drives it does work over the step.
+      const auto now = motion_at(body.motion[d], time, dt);
+      body.acceleration[d] = now[2];
+      const double reaction = body.mass * now[2] - body.force[d];
+      body.work += 0.5 * (reaction + body.motion_reaction[d]) * body_step_[b][d];
+      body.motion_reaction[d] = reaction;
+    }
     body.velocity += 0.5 * dt * body.acceleration;
     if (body.rotates) {
       // Second kick, with the moment at the new orientation (its work exact, as in predict()).

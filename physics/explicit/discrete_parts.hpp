@@ -56,7 +56,10 @@ struct RigidBody {
   Eigen::Vector3d angular_momentum = Eigen::Vector3d::Zero();      ///< L = R I Rᵀ ω (N m s)
   Eigen::Vector3d force = Eigen::Vector3d::Zero();                 ///< force of the step (N)
   Eigen::Vector3d moment = Eigen::Vector3d::Zero();                ///< moment about the point (N m)
-  double work = 0;  ///< work of the body-level loads (J)
+  double work = 0;  ///< work of the body-level loads (J), prescribed motion's included
+  std::array<int, 3> motion{-1, -1, -1};  ///< index of the prescribed-motion function, per axis
+  Eigen::Vector3d motion_origin = Eigen::Vector3d::Zero();    ///< U when the motion starts (m)
+  Eigen::Vector3d motion_reaction = Eigen::Vector3d::Zero();  ///< force driving it, last step (N)
 };
 
 /// The discrete parts of a run.
@@ -129,6 +132,10 @@ class DiscreteParts {
   std::vector<int> body_of_node_;
   std::vector<BodyMoment> moments_;
   std::vector<Expression> moment_functions_;
+  std::vector<Expression> motion_functions_;  // prescribed translations of bodies
+  double time_ = 0;                           // time of the last correct()
+  // Displacement, velocity and acceleration of prescribed function \p f at time \p t.
+  std::array<double, 3> motion_at(int f, double t, double dt) const;
   double stable_step_ = 1e300;
   double spring_energy_ = 0, spring_power_ = 0;
   std::vector<double> body_sums_;  // force and moment of every body, summed over ranks

@@ -41,7 +41,9 @@ void DiscreteParts::start_from_preload(const NodalArrays& nodes,
   for (int d = 0; d < 3; ++d) {
     Eigen::MatrixXd K = Eigen::MatrixXd::Zero(n, n);
     Eigen::VectorXd F = Eigen::VectorXd::Zero(n);
-    auto free = [&](int b) { return b >= 0 && !known[b] && !bodies_[b].fixed[d]; };
+    auto free = [&](int b) {
+      return b >= 0 && !known[b] && !bodies_[b].fixed[d] && bodies_[b].motion[d] < 0;
+    };
     auto position = [&](int b) { return b >= 0 && !free(b) ? bodies_[b].displacement[d] : 0.0; };
     for (std::size_t s = 0; s < springs_.size(); ++s) {
       const Spring& spring = springs_[s];
@@ -87,6 +89,8 @@ void DiscreteParts::start_from_preload(const NodalArrays& nodes,
         bodies_[b].displacement[d] = U(b);
     }
   }
+  for (auto& body : bodies_)
+    body.motion_origin = body.displacement;  // a prescribed motion starts from here
 }
 
 }  // namespace railfe

@@ -40,6 +40,12 @@ ParameterSpec discrete_parameters() {
   body.real_array("Angular velocity", {0, 0, 0}, "Initial angular velocity.", "rad/s", 3);
   body.text("Fixed translations", "", "Translations held at zero: letters of 'xyz'.");
   body.text("Fixed rotations", "", "Rotations held at zero: letters of 'xyz'.");
+  for (const char* axis : {"x", "y", "z"}) {
+    body.text(std::string("Motion ") + axis, "",
+              std::string("Prescribed displacement of the reference point along ") + axis +
+                  " from its start: a function of t (m), e.g. '1e-3*sin(2*pi*50*t)' ('' = "
+                  "free). The force that drives it does work counted in the energy balance.");
+  }
   spec.named_sublists("Rigid bodies", body, "Rigid bodies and point masses.");
 
   ParameterSpec spring(
@@ -332,6 +338,12 @@ void read_discrete(const Teuchos::ParameterList& discrete, const std::string& de
     for (int d = 0; d < 3; ++d) {
       body.fixed[d] = translations[d];
       body.fixed[3 + d] = rotations[d];
+      const std::string axis(1, "xyz"[d]);
+      body.motion[d] = entry.template get<std::string>("Motion " + axis);
+      if (!body.motion[d].empty() && body.fixed[d])
+        throw_input_error(deck, where + "/Motion " + axis,
+                          "is given for a translation that Fixed translations holds at zero",
+                          "either Motion " + axis + " or '" + axis + "' in Fixed translations");
     }
     if (body.node_set.empty() && !body.reference)
       throw_input_error(deck, where, "has neither a Node set nor a Reference point",

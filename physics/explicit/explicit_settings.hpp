@@ -68,6 +68,9 @@ struct RigidBodySpec {
   std::array<double, 3> velocity{};          ///< initial velocity (m/s)
   std::array<double, 3> angular_velocity{};  ///< initial angular velocity (rad/s)
   std::array<bool, 6> fixed{};               ///< locked translations x y z, rotations x y z
+  /// Prescribed displacement of the reference point along x, y, z: a function of t (m) from
+  /// its position at the start, or "" (free).
+  std::array<std::string, 3> motion{};
 };
 
 /// A linear spring–damper, axis-aligned, between two ends: a rigid body (its reference point),

@@ -206,9 +206,12 @@ void ExplicitStep::run(StepContext& context) {
     start = preload->getData().getRawPtr();
   }
   solver.initialise(start);
-  if (solver.mass_scaling().added_mass > 0.01 * solver.total_mass() && comm.is_root())
-    std::fprintf(stderr, "railfe: warning: %s: %s\n", path.c_str(),
-                 mass_scaling_warning(solver).c_str());
+  // total_mass() is collective: every rank builds the text, the root prints it.
+  if (solver.mass_scaling().added_mass > 0.01 * solver.total_mass()) {
+    const std::string warning = mass_scaling_warning(solver);
+    if (comm.is_root())
+      std::fprintf(stderr, "railfe: warning: %s: %s\n", path.c_str(), warning.c_str());
+  }
   const double initial_stable_step = solver.stable_step();
   if (!(initial_stable_step > 0) || !std::isfinite(initial_stable_step))
     throw RunError(path + ": no stable step could be found (degenerate elements or no mass?)");
