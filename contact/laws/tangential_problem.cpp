@@ -139,6 +139,10 @@ TangentialSolution solve_tangential(const HalfSpaceKernels& kernels,
       }
     }
   const bool speed_dependent = friction.at(1e300) != friction.static_coefficient;
+  // Falling friction takes μ at a slip speed that moves half way to each sweep's slip: with the
+  // full step the sweeps can wander instead of settling (20 x 20 Hertz patch, ξ 2e-3, μs 0.4,
+  // μd 0.1, c 10 s/m: no end in 5000 sweeps; halved, 130). The settled state is the same.
+  std::vector<double> slip_speed(speed_dependent ? n : 0, 0.0);
   std::vector<int> order = contact;
   std::sort(order.begin(), order.end(),
             [&](int a, int b) { return a / mx != b / mx ? a / mx < b / mx : a % mx > b % mx; });
@@ -158,8 +162,7 @@ TangentialSolution solve_tangential(const HalfSpaceKernels& kernels,
       const double by = (c1 * uy[d + 1] + c2 * uy[d + 2]) / (c1 + c2) - wy * h;
       // Coulomb friction needs no slip speed (the square roots here cost a tenth of a sweep).
       const double bound =
-          (speed_dependent ? friction.at(friction.rolling_speed * std::hypot(t.sx[e], t.sy[e]))
-                           : friction.static_coefficient) *
+          (speed_dependent ? friction.at(slip_speed[e]) : friction.static_coefficient) *
           pressure[e];
       // The element's exact block minimisation: min ½ (q - q0)ᵀ D (q - q0) + rᵀ q over |q| <= bound
       // with D its self-influence and r its residual; where the bound is active the slip
@@ -192,6 +195,9 @@ TangentialSolution solve_tangential(const HalfSpaceKernels& kernels,
         spread_change(i, j, dqx, dqy);
       t.sx[e] = (ux[d] - bx) / h;
       t.sy[e] = (uy[d] - by) / h;
+      if (speed_dependent)
+        slip_speed[e] +=
+            0.5 * (friction.rolling_speed * std::hypot(t.sx[e], t.sy[e]) - slip_speed[e]);
     }
     if (largest_squared <= settings.tolerance * scale * settings.tolerance * scale) {
       t.converged = true;
