@@ -55,6 +55,8 @@ void CreepTable::build(const CreepTableAxes& axes, const std::string& path,
     const NormalSolution& normal = patch.normal;
     FrictionLaw friction;
     friction.static_coefficient = friction.dynamic_coefficient = mu;
+    TangentialSettings settings;
+    settings.leading_edge = patch.leading_edge;
     const double unit = mu * h.pressure / G;
     // Forces are odd in the creepages: the node opposite (i, j, k) is its mirror image.
     std::map<std::array<int, 3>, std::array<double, 3>> values;
@@ -67,8 +69,9 @@ void CreepTable::build(const CreepTableAxes& axes, const std::string& path,
             v = {-found->second[0], -found->second[1], -found->second[2]};
           } else {
             auto s = [&](int q) { return axes.t[q] / (1 - std::abs(axes.t[q])); };
-            const TangentialSolution t = solve_tangential(
-                kernels, normal.pressure, {s(i) * unit, s(j) * unit, s(k) * unit / a}, friction);
+            const TangentialSolution t =
+                solve_tangential(kernels, normal.pressure,
+                                 {s(i) * unit, s(j) * unit, s(k) * unit / a}, friction, settings);
             if (!t.converged)
               throw std::runtime_error("creep table: the exact solver did not settle");
             v = {t.forces.Fx / (mu * load), t.forces.Fy / (mu * load),

@@ -124,6 +124,16 @@ NormalSolution solve_normal(const HalfSpaceKernels& kernels, const std::vector<d
   return s;
 }
 
+std::vector<double> hertz_leading_edge(const HertzContact& hertz, const ContactGrid& grid) {
+  std::vector<double> edge(static_cast<std::size_t>(grid.my), std::nan(""));
+  for (int j = 0; j < grid.my; ++j) {
+    const double inside = 1 - (grid.y(j) / hertz.b) * (grid.y(j) / hertz.b);
+    if (inside > 0)
+      edge[static_cast<std::size_t>(j)] = hertz.a * std::sqrt(inside);
+  }
+  return edge;
+}
+
 HertzPatch solve_hertz_patch(const HertzContact& hertz, double G, double nu, int m) {
   return solve_hertz_patch(hertz, G, nu, m, m);
 }
@@ -151,6 +161,7 @@ HertzPatch solve_hertz_patch(const HertzContact& hertz, double G, double nu, int
   // those at 1e-10 (a/b = 0.5 patch, 24 x 22 and 48 x 44), below the tangential solve's own
   // 1e-9, in a quarter fewer iterations.
   patch.normal = solve_normal(*patch.kernels, separation, hertz.load, 1e-8, 2000, &start);
+  patch.leading_edge = hertz_leading_edge(hertz, grid);
   return patch;
 }
 

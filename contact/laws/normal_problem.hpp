@@ -33,10 +33,15 @@ NormalSolution solve_normal(const HalfSpaceKernels& kernels, const std::vector<d
                             double load, double tolerance = 1e-10, int max_iterations = 2000,
                             const std::vector<double>* start = nullptr);
 
+/// Per row of \p grid, x (m) of the leading edge of \p hertz's ellipse centred at the origin,
+/// a √(1 − y²/b²) at the row's centre (NaN for rows outside it): TangentialSettings::leading_edge.
+std::vector<double> hertz_leading_edge(const HertzContact& hertz, const ContactGrid& grid);
+
 /// A Hertzian patch on the grid the exact solver uses: its kernels and normal solution.
 struct HertzPatch {
   std::unique_ptr<HalfSpaceKernels> kernels;  ///< grid and influence coefficients
   NormalSolution normal;                      ///< pressures under the Hertz load
+  std::vector<double> leading_edge;           ///< the ellipse's leading edge per row (m)
 };
 
 /// The normal problem of the separation A x² + B y² of \p hertz under its load, on an \p m × \p m

@@ -24,7 +24,9 @@ CreepForces exact(double a, double b, double load, double mu, const Creepages& c
   const HertzPatch patch = solve_hertz_patch(h, kG, kNu, m);
   FrictionLaw friction;
   friction.static_coefficient = friction.dynamic_coefficient = mu;
-  return solve_tangential(*patch.kernels, patch.normal.pressure, creep, friction).forces;
+  TangentialSettings settings;
+  settings.leading_edge = patch.leading_edge;
+  return solve_tangential(*patch.kernels, patch.normal.pressure, creep, friction, settings).forces;
 }
 
 // Creepages at normalized values s (s = t / (1 - |t|) at a node).

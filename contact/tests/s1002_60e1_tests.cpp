@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "contact/geometry/contact_table.hpp"
@@ -235,24 +236,31 @@ TEST(S1002On60E1, PlainNewtonFromTheCentreFailsWhereTheTableStartDoesNot) {
   EXPECT_LE(most_iterations, 8);
 }
 
+// The measured heavy-haul pair: the rail's head overhangs (y turns back on both flanks), the
+// wheel is listed from its flange back towards the field side (mirrored, running point 70 mm
+// from the back).
+const WheelRailGeometry& worn_pair() {
+  static const WheelRailGeometry geometry = [] {
+    ProfileReadSettings wheel_axes;
+    wheel_axes.mirror_y = true;
+    wheel_axes.y_origin = 0.070;
+    auto curve = [](const std::string& name, const ProfileReadSettings& settings) {
+      std::vector<Vec2> points;
+      for (const auto& p : read_profile_file(shipped_profile(name), settings).points)
+        points.push_back({p[0], p[1]});
+      return spline_curve(points);
+    };
+    return WheelRailGeometry(curve("site_b_hr.prr", {}), curve("worn_high_mileage.prw", wheel_axes),
+                             TrackLayout{}, WheelsetLayout{});
+  }();
+  return geometry;
+}
+
 TEST(MeasuredProfiles, WornWheelOnWornHighRailClosesOrSaysSo) {
-  // The measured heavy-haul pair: the rail's head overhangs (y turns back on both flanks), the
-  // wheel is listed from its flange back towards the field side (mirrored, running point 70 mm
-  // from the back). Within +-8.5 mm every row closes. From 8.7 mm, where the worn flange (78
-  // degrees) comes into contact, rows do not close, and they say so (converged false). No row
-  // that closed penetrates anywhere.
-  ProfileReadSettings wheel_axes;
-  wheel_axes.mirror_y = true;
-  wheel_axes.y_origin = 0.070;
-  auto curve = [](const std::string& name, const ProfileReadSettings& settings) {
-    std::vector<Vec2> points;
-    for (const auto& p : read_profile_file(shipped_profile(name), settings).points)
-      points.push_back({p[0], p[1]});
-    return spline_curve(points);
-  };
-  const WheelRailGeometry geometry(curve("site_b_hr.prr", {}),
-                                   curve("worn_high_mileage.prw", wheel_axes), TrackLayout{},
-                                   WheelsetLayout{});
+  // Within +-8.5 mm every row closes. From 8.7 mm, where the worn flange (78 degrees) comes into
+  // contact, rows do not close, and they say so (converged false): no pose has both wheels
+  // touching there (next test). No row that closed penetrates anywhere.
+  const WheelRailGeometry& geometry = worn_pair();
   const ContactTable table(geometry, 0.015, 121);
   for (const auto& row : table.rows()) {
     if (std::abs(row.lateral) <= 0.0085 + 1e-12) {
@@ -266,6 +274,62 @@ TEST(MeasuredProfiles, WornWheelOnWornHighRailClosesOrSaysSo) {
         EXPECT_GT(least_gap_sample(geometry, side, flange, pose, 2000).gap, -1e-8)
             << "shift " << row.lateral;
   }
+}
+
+// Least gap of the tread or flange of \p side in \p pose: the local search from the best of
+// 2000 samples.
+double part_gap(const WheelRailGeometry& geometry, TrackSide side, bool flange,
+                const WheelsetPose& pose) {
+  const GapSample s = least_gap_sample(geometry, side, flange, pose, 2000);
+  const ContactPoint c = search_contact(geometry, side, flange, pose, s.s_wheel, s.s_rail);
+  return c.valid() ? c.gap : s.gap;
+}
+
+TEST(MeasuredProfiles, WornPairPastItsFlangeContactHasNoPoseWithBothWheelsTouching) {
+  // Why the worn pair's rows from 8.7 mm do not close: the worn flange (78.6 degrees) is steeper
+  // than atan(2e / r0) = 73 degrees, so rolling the wheelset to lower the left wheel swings the
+  // right flange into the rail (its gap grows with roll, the tread's falls). Of the three parts
+  // that can touch (left tread, right tread, right flange), closing any two leaves the third
+  // penetrating or the left wheel lifted: there is no rigid pose with both wheels touching.
+  // Newton on the wheelset's vertical position and roll closes the two given parts.
+  const WheelRailGeometry& geometry = worn_pair();
+  struct Part {
+    TrackSide side;
+    bool flange;
+  };
+  const Part left_tread{TrackSide::left, false}, right_tread{TrackSide::right, false},
+      right_flange{TrackSide::right, true};
+  const auto third_gap = [&](double lateral, Part a, Part b, Part third) {
+    double vertical = 1.8e-4, roll = 8.4e-5;
+    for (int iteration = 0; iteration < 30; ++iteration) {
+      const auto gaps = [&](double v, double r) {
+        const WheelsetPose pose{lateral, v, r, 0};
+        return std::array<double, 2>{part_gap(geometry, a.side, a.flange, pose),
+                                     part_gap(geometry, b.side, b.flange, pose)};
+      };
+      const std::array<double, 2> g = gaps(vertical, roll), gv = gaps(vertical + 1e-7, roll),
+                                  gr = gaps(vertical, roll + 1e-7);
+      if (std::abs(g[0]) + std::abs(g[1]) < 1e-11)
+        break;
+      const double a00 = (gv[0] - g[0]) / 1e-7, a01 = (gr[0] - g[0]) / 1e-7,
+                   a10 = (gv[1] - g[1]) / 1e-7, a11 = (gr[1] - g[1]) / 1e-7;
+      const double det = a00 * a11 - a01 * a10;
+      vertical -= (a11 * g[0] - a01 * g[1]) / det;
+      roll -= (-a10 * g[0] + a00 * g[1]) / det;
+    }
+    return part_gap(geometry, third.side, third.flange, WheelsetPose{lateral, vertical, roll, 0});
+  };
+  for (double lateral : {0.00875, 0.010}) {
+    // Both treads touching: the right flange penetrates (54 um at 8.75 mm).
+    EXPECT_LT(third_gap(lateral, left_tread, right_tread, right_flange), -1e-5) << lateral;
+    // Left tread and right flange: the right tread penetrates (0.48 mm at 8.75 mm).
+    EXPECT_LT(third_gap(lateral, left_tread, right_flange, right_tread), -1e-4) << lateral;
+    // The right wheel on tread and flange: the left wheel is lifted (0.17 mm at 8.75 mm, 4.1 mm
+    // at 10 mm).
+    EXPECT_GT(third_gap(lateral, right_tread, right_flange, left_tread), 1e-4) << lateral;
+  }
+  // At 8.5 mm, before the flange touches, both treads close with the flange clear.
+  EXPECT_GT(third_gap(0.0085, left_tread, right_tread, right_flange), 0) << 0.0085;
 }
 
 }  // namespace

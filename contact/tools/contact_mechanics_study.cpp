@@ -42,6 +42,8 @@ int falling_friction(const std::string& out) {
     for (int i = 0; i < m; ++i)
       separation[j * m + i] = h.A * grid.x(i) * grid.x(i) + h.B * grid.y(j) * grid.y(j);
   const NormalSolution normal = solve_normal(kernels, separation, load);
+  TangentialSettings settings;
+  settings.leading_edge = hertz_leading_edge(h, grid);
   std::ofstream csv(out);
   csv << "mu_static,mu_dynamic,decay_s_per_m,speed_m_per_s,xi,spread_of_starts,unique,Fx_N,"
          "sweeps\n";
@@ -53,8 +55,8 @@ int falling_friction(const std::string& out) {
       friction.decay = l == 0 ? 0.0 : std::pow(10.0, 0.5 * (l - 1));
       friction.rolling_speed = 30;
       double spread = 0;
-      const TangentialSolution t =
-          solve_steady_rolling(kernels, normal.pressure, {2e-3, 0, 0}, friction, 1e-6, &spread);
+      const TangentialSolution t = solve_steady_rolling(kernels, normal.pressure, {2e-3, 0, 0},
+                                                        friction, 1e-6, &spread, settings);
       csv << friction.static_coefficient << ',' << friction.dynamic_coefficient << ','
           << friction.decay << ',' << friction.rolling_speed << ",0.002," << spread << ','
           << (t.converged ? 1 : 0) << ',' << t.forces.Fx << ',' << t.sweeps << '\n';
@@ -132,9 +134,11 @@ void contact_case(std::ofstream& csv, double& sink) {
       iterations = patch.normal.iterations;
       start = thread_seconds();
       forces.clear();
+      TangentialSettings settings;
+      settings.leading_edge = patch.leading_edge;
       for (const double xi : creepages) {
-        const TangentialSolution t =
-            solve_steady_rolling(*patch.kernels, patch.normal.pressure, {xi, 0, 0}, coulomb);
+        const TangentialSolution t = solve_steady_rolling(
+            *patch.kernels, patch.normal.pressure, {xi, 0, 0}, coulomb, 1e-6, nullptr, settings);
         sweeps = std::max(sweeps, t.sweeps);
         forces.push_back(t.forces.Fx);
         sink += t.forces.Fx;
@@ -208,9 +212,11 @@ int benchmark(const std::string& out) {
     iterations = patch.normal.iterations;
     start = std::chrono::steady_clock::now();
     sweeps = 0;
+    TangentialSettings settings;
+    settings.leading_edge = patch.leading_edge;
     for (const Creepages& s : cases) {
-      const TangentialSolution t =
-          solve_steady_rolling(*patch.kernels, patch.normal.pressure, s, coulomb);
+      const TangentialSolution t = solve_steady_rolling(*patch.kernels, patch.normal.pressure, s,
+                                                        coulomb, 1e-6, nullptr, settings);
       sweeps = std::max(sweeps, t.sweeps);
       sink += t.forces.Fx;
     }
@@ -258,10 +264,12 @@ int spin_convergence(const std::string& out) {
          "most\n";
   for (const int m : {16, 20, 24, 30, 40, 48, 60, 80, 100, 120})
     for (const TransportScheme scheme :
-         {TransportScheme::first_order, TransportScheme::second_order}) {
+         {TransportScheme::first_order, TransportScheme::second_order_smooth_edge,
+          TransportScheme::second_order}) {
       const HertzPatch patch = solve_hertz_patch(h, G, nu, m);
       TangentialSettings settings;
       settings.transport = scheme;
+      settings.leading_edge = patch.leading_edge;
       int sweeps = 0;
       const auto solve = [&](const Creepages& s) {
         const TangentialSolution t =
@@ -274,8 +282,10 @@ int spin_convergence(const std::string& out) {
       const CreepForces fx = solve({creep, 0, 0}), fy = solve({0, creep, 0}),
                         fs = solve({0, 0, spin}), half = solve({0, 0, 0.5}),
                         two = solve({0, 0, 2.0}), combined = solve({0, 1e-3, 2.0});
-      csv << (scheme == TransportScheme::first_order ? "first-order" : "second-order") << ',' << m
-          << ',' << -fx.Fx / (G * ab * creep) << ',' << -fy.Fy / (G * ab * creep) << ','
+      csv << (scheme == TransportScheme::first_order                ? "first-order"
+              : scheme == TransportScheme::second_order_smooth_edge ? "second-order-smooth-edge"
+                                                                    : "second-order")
+          << ',' << m << ',' << -fx.Fx / (G * ab * creep) << ',' << -fy.Fy / (G * ab * creep) << ','
           << -fs.Fy / (G * ab * root * spin) << ',' << fy.Mz / (G * ab * root * creep) << ','
           << -fs.Mz / (G * ab * ab * spin) << ',' << kalker.C11 << ',' << kalker.C22 << ','
           << kalker.C23 << ',' << kalker.C33 << ',' << half.Fy << ',' << two.Fy << ','

@@ -232,7 +232,10 @@ void ContactPatchStep::run(StepContext& context) {
         const auto start = std::chrono::steady_clock::now();
         TangentialSolution t;
         try {
-          t = solve_steady_rolling(*patch.kernels, patch.normal.pressure, creep, friction);
+          TangentialSettings settings;
+          settings.leading_edge = patch.leading_edge;
+          t = solve_steady_rolling(*patch.kernels, patch.normal.pressure, creep, friction, 1e-6,
+                                   nullptr, settings);
         } catch (const std::invalid_argument& e) {
           throw_input_error(context.source(), context.path + "/Exact grid", e.what(),
                             "more elements");
