@@ -27,7 +27,7 @@ int automatic_block_size(int n_modes) {
 }
 
 KrylovPlan plan_krylov_space(int n_modes, int block_size, int krylov_blocks, long long free_dofs,
-                             long long deflated, int space_modes) {
+                             long long deflated, int minimum_space) {
   KrylovPlan plan;
   const long long available = free_dofs - deflated;
   plan.block_size = block_size > 0 ? block_size : automatic_block_size(n_modes);
@@ -55,12 +55,8 @@ KrylovPlan plan_krylov_space(int n_modes, int block_size, int krylov_blocks, lon
   }
   if (krylov_blocks == 0) {
     // Three times the wanted modes: with two, Krylov-Schur restarts so often that it needs
-    // twice the operator applications (measured on the wheel, 140 modes: 832 against 432). A
-    // small batch needs more than three times: on the wheel 16 modes took 82 applications in
-    // 48 vectors (restarting) and 58 or 66 in 56 or 64 (one filling), so at least 48 more
-    // vectors than modes.
-    const int sized_for = std::max(n_modes, space_modes);
-    const int wanted = std::max(3 * sized_for, n_modes + 48);
+    // twice the operator applications (measured on the wheel, 140 modes: 832 against 432).
+    const int wanted = std::max({3 * n_modes, n_modes + 20, minimum_space});
     plan.blocks =
         static_cast<int>(std::min<long long>(ceil_div(wanted, plan.block_size), fitting_blocks));
     return plan;
@@ -81,6 +77,13 @@ KrylovPlan plan_krylov_space(int n_modes, int block_size, int krylov_blocks, lon
     plan.allowed = "at most " + std::to_string(fitting_blocks) + " blocks, or 0 (automatic)";
   }
   return plan;
+}
+
+int band_space(int band_modes) {
+  // On the wheel 16 modes took 82 operator applications in 48 vectors (restarting) and 58 or
+  // 66 in 56 or 64 (one filling); 10 modes without a band take 52 in 30 but 60 in 58, so the
+  // wider space is kept to bands.
+  return std::max(3 * band_modes, band_modes + 48);
 }
 
 int largest_batch(int block_size, long long free_dofs) {

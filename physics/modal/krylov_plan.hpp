@@ -43,11 +43,16 @@ struct KrylovPlan {
 int automatic_block_size(int n_modes);
 
 /// The Krylov space for \p n_modes eigenpairs in blocks of \p block_size (0 = automatic) with
-/// \p krylov_blocks blocks (0 = about three times \p space_modes, or \p n_modes where that is
-/// larger), in a model with \p free_dofs free DOFs of which \p deflated are spanned by modes
+/// \p krylov_blocks blocks (0 = about three times the modes, and at least \p minimum_space
+/// vectors), in a model with \p free_dofs free DOFs of which \p deflated are spanned by modes
 /// found earlier. Sets problem and parameter when no space fits.
 KrylovPlan plan_krylov_space(int n_modes, int block_size, int krylov_blocks, long long free_dofs,
-                             long long deflated = 0, int space_modes = 0);
+                             long long deflated = 0, int minimum_space = 0);
+
+/// The smallest automatic Krylov space (vectors) for a batch of a frequency band that holds
+/// \p band_modes modes, found and wanted: three times them, and at least 48 more than them (a
+/// small first batch restarts in less).
+int band_space(int band_modes);
 
 /// The most modes a single batch can ask for in a model with \p free_dofs free DOFs (blocks of
 /// \p block_size, 0 = automatic), for messages.

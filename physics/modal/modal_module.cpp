@@ -71,7 +71,8 @@ ParameterSpec modal_parameters() {
                "(narrower where the model has too few free DOFs).",
                Range::at_least(0));
   spec.integer("Krylov blocks", 0,
-               "Blocks in the Krylov space (0 = enough for three times the modes wanted, and "
+               "Blocks in the Krylov space (0 = enough for about three times the modes wanted; "
+               "with a Frequency band, three times all the band's modes found and wanted, and "
                "at least 48 vectors more than them; at most the model's free DOFs). The space "
                "may not exceed the free DOFs.",
                Range::at_least(0));

@@ -331,6 +331,8 @@ void ModalStep::run(StepContext& context) {
   settings.tolerance = p.get<double>("Tolerance");
   settings.free_dofs = free_dofs;
   const auto& band = p.get<Teuchos::Array<double>>("Frequency band");
+  if (!band.empty())
+    settings.minimum_space = band_space(settings.n_modes);
   ShiftInvertResult result;
   int batches = 1;
   std::string block_sizes, krylov_spaces;
@@ -374,7 +376,8 @@ void ModalStep::run(StepContext& context) {
     settings.n_modes =
         from_scratch ? static_cast<int>(n_found) + rest
                      : std::min(rest, largest_batch(settings.block_size, free_dofs - n_found));
-    settings.space_modes = settings.n_modes + (from_scratch ? 0 : static_cast<int>(n_found));
+    settings.minimum_space =
+        band_space(settings.n_modes + (from_scratch ? 0 : static_cast<int>(n_found)));
     if (settings.n_modes < 1 || batches >= kMaximumBandBatches) {
       throw RunError("Frequency band: the band up to " + CsvWriter::format(band[1]) +
                      " Hz holds more modes " + "than the model can resolve in " +
