@@ -42,9 +42,9 @@ ParameterSpec modal_parameters() {
   ParameterSpec spec("Natural frequencies and mode shapes of hex8 solids (K phi = omega^2 M phi).");
   spec.integer("Modes", 0,
                "Number of lowest modes (above the shift) to compute; with a Frequency band, the "
-               "first batch of the search (later batches are sized from the growth of the mode "
-               "count with frequency). 0 = automatic: 10 without a band; with one, up to 32, "
-               "then one batch estimated for the rest of the band.",
+               "first batch of the search (the next batch is sized from the growth of the mode "
+               "count with frequency). 0 = automatic: 10 without a band; with one, up to 16, "
+               "then the whole band as extrapolated from them, solved again in one batch.",
                Range::at_least(0));
   spec.real_array("Frequency band", {},
                   "{low, high}: compute every mode in this band instead of a fixed number.", "Hz",
@@ -71,8 +71,10 @@ ParameterSpec modal_parameters() {
                "(narrower where the model has too few free DOFs).",
                Range::at_least(0));
   spec.integer("Krylov blocks", 0,
-               "Blocks in the Krylov space (0 = enough for about three times the modes wanted, "
-               "at most the model's free DOFs). The space may not exceed the free DOFs.",
+               "Blocks in the Krylov space (0 = enough for about three times the modes wanted; "
+               "with a Frequency band, three times all the band's modes found and wanted, and "
+               "at least 48 vectors more than them; at most the model's free DOFs). The space "
+               "may not exceed the free DOFs.",
                Range::at_least(0));
   spec.integer("Maximum restarts", 100, "Krylov-Schur restarts before giving up.",
                Range::at_least(0));

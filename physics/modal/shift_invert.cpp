@@ -133,8 +133,9 @@ ShiftInvertResult ShiftInvertEigensolver::solve(const ShiftInvertSettings& setti
 
   const long long free_dofs = settings.free_dofs > 0 ? settings.free_dofs : n_global;
   const long long deflated = found.is_null() ? 0 : static_cast<long long>(found->getNumVectors());
-  const KrylovPlan plan = plan_krylov_space(settings.n_modes, settings.block_size,
-                                            settings.krylov_blocks, free_dofs, deflated);
+  const KrylovPlan plan =
+      plan_krylov_space(settings.n_modes, settings.block_size, settings.krylov_blocks, free_dofs,
+                        deflated, settings.minimum_space);
   if (!plan.problem.empty())
     throw RunError(plan.parameter + ": " + plan.problem + " (allowed: " + plan.allowed + ")");
   const int block_size = plan.block_size;

@@ -16,9 +16,12 @@ namespace railfe {
 
 /// How the eigensolver runs.
 struct ShiftInvertSettings {
-  int n_modes = 10;            ///< eigenpairs wanted (those nearest the shift)
-  int block_size = 0;          ///< vectors per Krylov block; 0 = automatic (krylov_plan.hpp)
-  int krylov_blocks = 0;       ///< blocks in the Krylov space; 0 = automatic (about 3 × n_modes)
+  int n_modes = 10;       ///< eigenpairs wanted (those nearest the shift)
+  int block_size = 0;     ///< vectors per Krylov block; 0 = automatic (krylov_plan.hpp)
+  int krylov_blocks = 0;  ///< blocks in the Krylov space; 0 = automatic (about 3 × n_modes)
+  /// Vectors the automatic Krylov space holds at least: a band's batches are sized for the
+  /// whole band (krylov_plan.hpp).
+  int minimum_space = 0;
   long long free_dofs = 0;     ///< DOFs not fixed (bounds the space); 0 = every row of K
   int maximum_restarts = 100;  ///< restarts before giving up
   double tolerance = 1e-10;    ///< Ritz residual of the inverted problem, relative to its value

@@ -50,6 +50,32 @@ TEST(KrylovPlan, ExplicitBlocksAreCheckedBothWays) {
   EXPECT_TRUE(plan_krylov_space(10, 2, 59, 120).problem.empty());
 }
 
+TEST(KrylovPlan, BandBatchesGetFortyEightVectorsToSpare) {
+  // The wheel's first band batch: 16 modes restarted in 48 vectors (82 operator applications)
+  // and converged in one filling of 56 or 64 (58, 66).
+  EXPECT_GE(plan_krylov_space(16, 0, 0, 100000, 0, band_space(16)).dimension(), 16 + 48);
+  // Without a band the rule stays three times the modes (10 modes: 52 applications in 30
+  // vectors, 60 in 58), and from 24 modes on the two agree.
+  EXPECT_EQ(plan_krylov_space(10, 2, 0, 100000).dimension(), 30);
+  EXPECT_EQ(plan_krylov_space(140, 8, 0, 100000, 0, band_space(140)).dimension(), 424);
+  EXPECT_EQ(plan_krylov_space(140, 8, 0, 100000).dimension(), 424);
+}
+
+TEST(KrylovPlan, ContinuationSpaceIsSizedForTheWholeBand) {
+  // The wheel's second batch: 118 modes beyond 16 found, 134 in the band as estimated. A space
+  // for the 118 alone (3 x 118) restarts; one for all 134 converges in one filling.
+  const KrylovPlan plan = plan_krylov_space(118, 0, 0, 102120, 16, band_space(134));
+  EXPECT_EQ(plan.block_size, 8);
+  EXPECT_GE(plan.dimension(), 3 * 134);
+  EXPECT_LT(plan.dimension(), 3 * 134 + 8);
+  // Never past the free DOFs less the modes found, however large the band.
+  const KrylovPlan bounded = plan_krylov_space(30, 0, 0, 200, 50, band_space(400));
+  EXPECT_TRUE(bounded.problem.empty()) << bounded.problem;
+  EXPECT_LT(bounded.dimension(), 200 - 50);
+  // A deck's Krylov blocks win over the band's size.
+  EXPECT_EQ(plan_krylov_space(118, 8, 20, 102120, 16, band_space(134)).dimension(), 160);
+}
+
 TEST(KrylovPlan, BlockSizeGrowsWithTheBatch) {
   EXPECT_EQ(plan_krylov_space(10, 0, 0, 100000).block_size, 2);
   EXPECT_EQ(plan_krylov_space(40, 0, 0, 100000).block_size, 4);
@@ -79,6 +105,7 @@ TEST(KrylovPlan, BandEstimateOfABarFollowsNProportionalToF) {
   std::vector<double> spectrum;
   for (int k = 1; k <= 400; ++k)
     spectrum.push_back((2 * k - 1) * 1293.0);
+  expect_band_estimate(spectrum, automatic_first_batch(100000), 200e3);
   expect_band_estimate(spectrum, 32, 200e3);
 }
 
@@ -89,6 +116,7 @@ TEST(KrylovPlan, BandEstimateOfASolidFollowsWeylsLaw) {
   std::vector<double> spectrum;
   for (int k = 1; k <= 2000; ++k)
     spectrum.push_back(std::cbrt(k / C));
+  expect_band_estimate(spectrum, automatic_first_batch(100000), spectrum[299]);
   expect_band_estimate(spectrum, 32, spectrum[299]);
 }
 
