@@ -33,6 +33,9 @@ struct SolidKernelSettings {
   double hourglass_coefficient = 0.03;                 ///< κ of the hourglass form
   double bulk_linear = 0.06;                           ///< linear bulk viscosity coefficient
   double bulk_quadratic = 1.5;                         ///< quadratic bulk viscosity coefficient
+  /// One-point elements in SIMD batches of kLanes (add_internal_forces_batched()); false: one at
+  /// a time, the scalar reference. Full integration is always scalar.
+  bool batched = true;
 };
 
 /// The hex8 elements of one rank, structure of arrays (element e's data at e × stride).
@@ -85,6 +88,15 @@ SolidElements build_solid_elements(const MeshPartition& partition, const Materia
 SolidForceTotals add_internal_forces(const SolidElements& elements,
                                      const SolidKernelSettings& settings, const double* coordinates,
                                      const double* u, const double* v, double* forces);
+
+/// add_internal_forces() for one-point elements, kLanes elements at a time in SIMD lanes
+/// (solid_kernel_batched.cpp): the same arithmetic as the scalar kernel, so forces, energies and
+/// steps equal its own to round-off (fused multiply-adds and the order of the sums differ). The
+/// last batch is filled with copies of its last element, whose results are dropped.
+SolidForceTotals add_internal_forces_batched(const SolidElements& elements,
+                                             const SolidKernelSettings& settings,
+                                             const double* coordinates, const double* u,
+                                             const double* v, double* forces);
 
 /// The smallest stable step over every rank's elements and where it is, as "element 12 of block
 /// 'rail' at (x, y, z) m" (collective). \p step gives each element's step (e.g. the reference

@@ -1,0 +1,156 @@
+// The batched one-point hex8 kernel: kLanes elements at a time, one per SIMD lane. Each batch
+// gathers its elements' nodes and constants into lanes (structure of arrays), runs the scalar
+// kernel's arithmetic (solid_element_forces.hpp) on whole lanes, and scatters the forces one
+// element after the other, so elements that share nodes add in the scalar kernel's order.
+//
+// The pass is compiled for AVX-512, AVX2 and the build's baseline (target_clones, chosen once at
+// load time by the CPU), so a portable build (RAILFE_NATIVE=OFF) keeps the SIMD width of the CPU
+// that runs it; this file is compiled with -fno-math-errno so that √ is one vector instruction.
+#include <algorithm>
+#include <cstring>
+
+#include "physics/elements/hex8_one_point.hpp"
+#include "physics/explicit/solid_element_forces.hpp"
+#include "physics/explicit/solid_kernel.hpp"
+
+#if defined(__x86_64__) && defined(__GNUC__) && defined(__has_attribute)
+#if __has_attribute(target_clones)
+#define RAILFE_SIMD_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#endif
+#endif
+#ifndef RAILFE_SIMD_CLONES
+#define RAILFE_SIMD_CLONES
+#endif
+
+namespace railfe {
+
+namespace {
+
+// What the kernel reads of one batch, lane l holding element element[l].
+struct Batch {
+  Lanes u[8][3], v[8][3], x[8][3];  // displacement, velocity, current position
+  Lanes gradient[24];               // mean gradients [i × 8 + a]
+  Lanes projection[12];             // hourglass projections [α × 3 + i]
+};
+
+// The lanes of a per-element field: contiguous for a full batch.
+RAILFE_LANE_INLINE Lanes lanes_of(const std::vector<double>& field, LocalIndex first,
+                                  const LocalIndex element[kLanes], bool full) {
+  Lanes values;
+  if (full) {
+    std::memcpy(&values, &field[first], sizeof(values));
+  } else {
+    for (int l = 0; l < kLanes; ++l)
+      values[l] = field[element[l]];
+  }
+  return values;
+}
+
+// Gathers the nodal values and stored element data of the batch's elements into \p batch.
+RAILFE_LANE_INLINE void gather(const SolidElements& elements, const LocalIndex element[kLanes],
+                               bool hourglass, const double* coordinates, const double* u,
+                               const double* v, Batch& batch) {
+  for (int l = 0; l < kLanes; ++l) {
+    const std::size_t e = static_cast<std::size_t>(element[l]);
+    const LocalIndex* nodes = &elements.nodes[8 * e];
+    for (int a = 0; a < 8; ++a) {
+      const std::size_t k = 3 * static_cast<std::size_t>(nodes[a]);
+      for (int i = 0; i < 3; ++i) {
+        batch.u[a][i][l] = u[k + i];
+        batch.v[a][i][l] = v[k + i];
+        batch.x[a][i][l] = coordinates[k + i];
+      }
+    }
+    const double* gradient = &elements.gradients[24 * e];
+    for (int k = 0; k < 24; ++k)
+      batch.gradient[k][l] = gradient[k];
+    if (hourglass) {
+      const double* projection = &elements.hourglass_projection[12 * e];
+      for (int k = 0; k < 12; ++k)
+        batch.projection[k][l] = projection[k];
+    }
+  }
+  for (int a = 0; a < 8; ++a)
+    for (int i = 0; i < 3; ++i)
+      batch.x[a][i] += batch.u[a][i];
+}
+
+RAILFE_SIMD_CLONES SolidForceTotals batched_pass(const SolidElements& elements,
+                                                 const SolidKernelSettings& settings,
+                                                 const double* coordinates, const double* u,
+                                                 const double* v, double* forces) {
+  SolidForceTotals totals;
+  const bool stiffness_form = settings.hourglass == HourglassForm::stiffness;
+  const bool hourglass = settings.hourglass != HourglassForm::none;
+  Lanes lane_index;
+  for (int l = 0; l < kLanes; ++l)
+    lane_index[l] = l;
+  Lanes strain{}, hourglass_energy{}, hourglass_power{}, viscous_power{};
+  Batch batch;
+  const LocalIndex n = elements.n_elements;
+  for (LocalIndex first = 0; first < n; first += kLanes) {
+    const LocalIndex count = std::min<LocalIndex>(kLanes, n - first);
+    const bool full = count == kLanes;
+    LocalIndex element[kLanes];
+    for (int l = 0; l < kLanes; ++l)
+      element[l] = first + std::min<LocalIndex>(l, count - 1);
+    gather(elements, element, hourglass, coordinates, u, v, batch);
+
+    const SolidElementConstants<Lanes> constants{
+        lanes_of(elements.lambda, first, element, full),
+        lanes_of(elements.mu, first, element, full),
+        lanes_of(elements.density, first, element, full),
+        lanes_of(elements.wave_speed, first, element, full),
+        lanes_of(elements.length, first, element, full)};
+    const Lanes volume = lanes_of(elements.volume, first, element, full);
+    Lanes fe[8][3] = {};
+    Lanes jacobian, div, viscous{}, energy{}, power{};
+    const Lanes point_strain = add_point_forces(batch.gradient, volume, batch.u, batch.v, constants,
+                                                settings, fe, viscous, jacobian, div);
+    const Lanes length = jacobian * volume / largest_face_area(batch.x);
+    if (hourglass) {
+      Lanes gamma[32];
+      hex8_hourglass_vectors(batch.projection, batch.gradient, gamma);
+      add_hourglass_forces(gamma, lanes_of(elements.hourglass_scale, first, element, full),
+                           stiffness_form ? batch.u : batch.v, stiffness_form, fe, energy, power);
+    }
+    const LaneMask valid = lane_index < static_cast<double>(count);
+    strain += select(valid, point_strain, Lanes{});
+    viscous_power += select(valid, viscous, Lanes{});
+    hourglass_energy += select(valid, energy, Lanes{});
+    hourglass_power += select(valid, power, Lanes{});
+
+    for (int l = 0; l < count; ++l) {
+      const LocalIndex* nodes = &elements.nodes[8 * static_cast<std::size_t>(first + l)];
+      for (int a = 0; a < 8; ++a)
+        for (int i = 0; i < 3; ++i)
+          forces[3 * static_cast<std::size_t>(nodes[a]) + i] += fe[a][i][l];
+    }
+    const Lanes step = current_stable_step(
+        lanes_of(elements.stable_step, first, element, full), constants.length, length,
+        select(div < 0.0, div, Lanes{}), constants.wave_speed, settings);
+    for (int l = 0; l < count; ++l)
+      if (step[l] < totals.stable_step) {
+        totals.stable_step = step[l];
+        totals.critical_element = first + l;
+      }
+  }
+  for (int l = 0; l < kLanes; ++l) {
+    totals.strain_energy += strain[l];
+    totals.hourglass_energy += hourglass_energy[l];
+    totals.hourglass_power += hourglass_power[l];
+    totals.viscous_power += viscous_power[l];
+  }
+  return totals;
+}
+
+}  // namespace
+
+SolidForceTotals add_internal_forces_batched(const SolidElements& elements,
+                                             const SolidKernelSettings& settings,
+                                             const double* coordinates, const double* u,
+                                             const double* v, double* forces) {
+  return batched_pass(elements, settings, coordinates, u, v, forces);
+}
+
+}  // namespace railfe
