@@ -81,6 +81,7 @@ SolidElements build_solid_elements(const MeshPartition& partition, const Materia
   const LocalIndex n = static_cast<LocalIndex>(order.size());
   const int n_points = settings.full_integration ? 8 : 1;
   elements.n_elements = n;
+  elements.n_nodes = partition.n_local_nodes();
   elements.n_points = n_points;
   elements.nodes.resize(8 * static_cast<std::size_t>(n));
   elements.gradients.resize(24 * static_cast<std::size_t>(n) * n_points);

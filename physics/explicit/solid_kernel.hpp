@@ -40,8 +40,9 @@ struct SolidKernelSettings {
 
 /// The hex8 elements of one rank, structure of arrays (element e's data at e × stride).
 struct SolidElements {
-  LocalIndex n_elements = 0;                ///< number of elements
-  int n_points = 1;                         ///< integration points per element (1 or 8)
+  LocalIndex n_elements = 0;  ///< number of elements
+  LocalIndex n_nodes = 0;     ///< local nodes: the nodal arrays the kernel reads hold 3 × n_nodes
+  int n_points = 1;           ///< integration points per element (1 or 8)
   std::vector<LocalIndex> nodes;            ///< 8 local node indices per element
   std::vector<LocalIndex> partition_index;  ///< element's index in the partition's block order
   std::vector<GlobalIndex> global_element;  ///< element's global index in the mesh

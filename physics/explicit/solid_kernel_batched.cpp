@@ -28,6 +28,7 @@ namespace {
 
 // What the kernel reads of one batch, lane l holding element element[l].
 struct Batch {
+  std::size_t offsets[kLanes][8];   // 3 × node of lane l's node a
   Lanes u[8][3], v[8][3], x[8][3];  // displacement, velocity, current position
   Lanes gradient[24];               // mean gradients [i × 8 + a]
   Lanes projection[12];             // hourglass projections [α × 3 + i]
@@ -46,33 +47,97 @@ RAILFE_LANE_INLINE Lanes lanes_of(const std::vector<double>& field, LocalIndex f
   return values;
 }
 
-// Gathers the nodal values and stored element data of the batch's elements into \p batch.
+// Gathers the nodal values and stored element data of the batch's elements into \p batch, four
+// values of an element at a time (transpose_rows()). A node's x, y, z are read with the next
+// node's x, which the last local node has not: a batch that holds it is gathered value by value.
 RAILFE_LANE_INLINE void gather(const SolidElements& elements, const LocalIndex element[kLanes],
                                bool hourglass, const double* coordinates, const double* u,
                                const double* v, Batch& batch) {
-  for (int l = 0; l < kLanes; ++l) {
-    const std::size_t e = static_cast<std::size_t>(element[l]);
-    const LocalIndex* nodes = &elements.nodes[8 * e];
+  const double* nodal[3] = {u, v, coordinates};
+  Lanes(*fields[3])[3] = {batch.u, batch.v, batch.x};
+  LocalIndex highest = 0;
+  for (int l = 0; l < kLanes; ++l)
     for (int a = 0; a < 8; ++a) {
-      const std::size_t k = 3 * static_cast<std::size_t>(nodes[a]);
-      for (int i = 0; i < 3; ++i) {
-        batch.u[a][i][l] = u[k + i];
-        batch.v[a][i][l] = v[k + i];
-        batch.x[a][i][l] = coordinates[k + i];
+      const LocalIndex node = elements.nodes[8 * static_cast<std::size_t>(element[l]) + a];
+      highest = std::max(highest, node);
+      batch.offsets[l][a] = 3 * static_cast<std::size_t>(node);
+    }
+  if (highest + 1 < elements.n_nodes) {
+    for (int a = 0; a < 8; ++a)
+      for (int f = 0; f < 3; ++f) {
+        Lanes columns[4];
+        transpose_rows(nodal[f], &batch.offsets[0][a], 8, columns);
+        for (int i = 0; i < 3; ++i)
+          fields[f][a][i] = columns[i];
       }
-    }
-    const double* gradient = &elements.gradients[24 * e];
-    for (int k = 0; k < 24; ++k)
-      batch.gradient[k][l] = gradient[k];
-    if (hourglass) {
-      const double* projection = &elements.hourglass_projection[12 * e];
-      for (int k = 0; k < 12; ++k)
-        batch.projection[k][l] = projection[k];
-    }
+  } else {
+    for (int a = 0; a < 8; ++a)
+      for (int f = 0; f < 3; ++f)
+        for (int i = 0; i < 3; ++i)
+          for (int l = 0; l < kLanes; ++l)
+            fields[f][a][i][l] = nodal[f][batch.offsets[l][a] + i];
+  }
+  std::size_t element_offsets[kLanes];
+  for (int l = 0; l < kLanes; ++l)
+    element_offsets[l] = 24 * static_cast<std::size_t>(element[l]);
+  for (int k = 0; k < 24; k += 4)
+    transpose_rows(elements.gradients.data() + k, element_offsets, 1, batch.gradient + k);
+  if (hourglass) {
+    // h_α · X_i from the reference coordinates, as build_solid_elements() stored them (same
+    // sums in the same order, products by ±1 exact): computing them reads 96 bytes less per
+    // element.
+    for (int alpha = 0; alpha < 4; ++alpha)
+      for (int i = 0; i < 3; ++i) {
+        Lanes sum{};
+        for (int a = 0; a < 8; ++a)
+          sum += kHex8HourglassBase.h[alpha][a] * batch.x[a][i];
+        batch.projection[3 * alpha + i] = sum;
+      }
   }
   for (int a = 0; a < 8; ++a)
     for (int i = 0; i < 3; ++i)
       batch.x[a][i] += batch.u[a][i];
+}
+
+// Adds the forces \p fe of the batch's first \p count lanes to \p forces, one element after
+// the other (so each nodal sum is made in the scalar kernel's order), x and y of a node as one
+// pair.
+RAILFE_LANE_INLINE void scatter(const Lanes fe[8][3], const std::size_t offsets[kLanes][8],
+                                LocalIndex count, double* forces) {
+  using Pair = double __attribute__((vector_size(2 * sizeof(double))));
+  Quad rows[8][kLanes];
+  for (int a = 0; a < 8; ++a)
+    transpose_columns(fe[a], rows[a]);
+  for (int l = 0; l < count; ++l)
+    for (int a = 0; a < 8; ++a) {
+      double* node = forces + offsets[l][a];
+      const Quad row = rows[a][l];
+      Pair xy;
+      std::memcpy(&xy, node, sizeof(Pair));
+      xy += __builtin_shufflevector(row, row, 0, 1);
+      std::memcpy(node, &xy, sizeof(Pair));
+      node[2] += row[2];
+    }
+}
+
+// Elements ahead of the batch whose stored data is fetched into the caches while it computes.
+constexpr LocalIndex kPrefetchDistance = 2 * kLanes;
+
+// Asks for the stored data of the batch starting at element \p first: ten sequential streams,
+// more than the hardware prefetchers follow (at 1e5 elements this took the batched pass from
+// 0.148 to 0.118 µs CPU per element-step; prefetching nodal rows as well made it slower).
+RAILFE_LANE_INLINE void prefetch(const SolidElements& elements, LocalIndex first) {
+  if (first + kLanes > elements.n_elements)
+    return;
+  const std::size_t e = static_cast<std::size_t>(first);
+  for (int line = 0; line < 24 * kLanes; line += 8)
+    __builtin_prefetch(&elements.gradients[24 * e + line]);
+  for (int line = 0; line < 8 * kLanes; line += 16)
+    __builtin_prefetch(&elements.nodes[8 * e + line]);
+  for (const auto* field :
+       {&elements.lambda, &elements.mu, &elements.density, &elements.wave_speed, &elements.length,
+        &elements.volume, &elements.hourglass_scale, &elements.stable_step})
+    __builtin_prefetch(field->data() + e);
 }
 
 RAILFE_SIMD_CLONES SolidForceTotals batched_pass(const SolidElements& elements,
@@ -94,6 +159,7 @@ RAILFE_SIMD_CLONES SolidForceTotals batched_pass(const SolidElements& elements,
     LocalIndex element[kLanes];
     for (int l = 0; l < kLanes; ++l)
       element[l] = first + std::min<LocalIndex>(l, count - 1);
+    prefetch(elements, first + kPrefetchDistance);
     gather(elements, element, hourglass, coordinates, u, v, batch);
 
     const SolidElementConstants<Lanes> constants{
@@ -120,12 +186,7 @@ RAILFE_SIMD_CLONES SolidForceTotals batched_pass(const SolidElements& elements,
     hourglass_energy += select(valid, energy, Lanes{});
     hourglass_power += select(valid, power, Lanes{});
 
-    for (int l = 0; l < count; ++l) {
-      const LocalIndex* nodes = &elements.nodes[8 * static_cast<std::size_t>(first + l)];
-      for (int a = 0; a < 8; ++a)
-        for (int i = 0; i < 3; ++i)
-          forces[3 * static_cast<std::size_t>(nodes[a]) + i] += fe[a][i][l];
-    }
+    scatter(fe, batch.offsets, count, forces);
     const Lanes step = current_stable_step(
         lanes_of(elements.stable_step, first, element, full), constants.length, length,
         select(div < 0.0, div, Lanes{}), constants.wave_speed, settings);

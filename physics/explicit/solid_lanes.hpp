@@ -7,6 +7,8 @@
 /// template and serves one element (double) or kLanes elements (Lanes).
 
 #include <cmath>
+#include <cstddef>
+#include <cstring>
 
 namespace railfe {
 
@@ -46,6 +48,52 @@ RAILFE_LANE_INLINE bool any(LaneMask mask) {
 template <class T>
 RAILFE_LANE_INLINE T maximum(T a, T b) {
   return select(a < b, b, a);
+}
+
+/// Four doubles: one row of transpose_rows().
+using Quad = double __attribute__((vector_size(4 * sizeof(double))));
+
+/// Reads 4 doubles at base + offsets[l × stride] for each lane l (any alignment) into \p columns:
+/// value c of row l goes to lane l of columns[c]. Eight row loads and eight permutations, where
+/// filling lanes one value at a time takes 32 loads and 32 stores (and stalls on the stores).
+RAILFE_LANE_INLINE void transpose_rows(const double* base, const std::size_t* offsets, int stride,
+                                       Lanes columns[4]) {
+  static_assert(kLanes == 8, "the permutations below are those of 8 lanes");
+  Quad quads[kLanes];
+  for (int l = 0; l < kLanes; ++l)
+    std::memcpy(&quads[l], base + offsets[l * stride], sizeof(Quad));
+  Lanes pairs[4];  // rows 2k and 2k + 1
+  for (int k = 0; k < 4; ++k)
+    pairs[k] = __builtin_shufflevector(quads[2 * k], quads[2 * k + 1], 0, 1, 2, 3, 4, 5, 6, 7);
+  // Values 0, 1 (first half) and 2, 3 (second half) of rows 0-3, then of rows 4-7.
+  const Lanes low[2] = {__builtin_shufflevector(pairs[0], pairs[1], 0, 4, 8, 12, 1, 5, 9, 13),
+                        __builtin_shufflevector(pairs[2], pairs[3], 0, 4, 8, 12, 1, 5, 9, 13)};
+  const Lanes high[2] = {__builtin_shufflevector(pairs[0], pairs[1], 2, 6, 10, 14, 3, 7, 11, 15),
+                         __builtin_shufflevector(pairs[2], pairs[3], 2, 6, 10, 14, 3, 7, 11, 15)};
+  columns[0] = __builtin_shufflevector(low[0], low[1], 0, 1, 2, 3, 8, 9, 10, 11);
+  columns[1] = __builtin_shufflevector(low[0], low[1], 4, 5, 6, 7, 12, 13, 14, 15);
+  columns[2] = __builtin_shufflevector(high[0], high[1], 0, 1, 2, 3, 8, 9, 10, 11);
+  columns[3] = __builtin_shufflevector(high[0], high[1], 4, 5, 6, 7, 12, 13, 14, 15);
+}
+
+/// The inverse of transpose_rows() for three columns: row l of \p rows is (x, y, z, 0) of lane l
+/// of \p columns. Eight permutations.
+RAILFE_LANE_INLINE void transpose_columns(const Lanes columns[3], Quad rows[kLanes]) {
+  const Lanes zero{};
+  // x and y of lanes 0-3, then 4-7; z and 0 likewise.
+  const Lanes low[2] = {
+      __builtin_shufflevector(columns[0], columns[1], 0, 1, 2, 3, 8, 9, 10, 11),
+      __builtin_shufflevector(columns[0], columns[1], 4, 5, 6, 7, 12, 13, 14, 15)};
+  const Lanes high[2] = {__builtin_shufflevector(columns[2], zero, 0, 1, 2, 3, 8, 9, 10, 11),
+                         __builtin_shufflevector(columns[2], zero, 4, 5, 6, 7, 12, 13, 14, 15)};
+  for (int k = 0; k < 2; ++k) {
+    const Lanes first = __builtin_shufflevector(low[k], high[k], 0, 4, 8, 12, 1, 5, 9, 13);
+    const Lanes second = __builtin_shufflevector(low[k], high[k], 2, 6, 10, 14, 3, 7, 11, 15);
+    rows[4 * k] = __builtin_shufflevector(first, first, 0, 1, 2, 3);
+    rows[4 * k + 1] = __builtin_shufflevector(first, first, 4, 5, 6, 7);
+    rows[4 * k + 2] = __builtin_shufflevector(second, second, 0, 1, 2, 3);
+    rows[4 * k + 3] = __builtin_shufflevector(second, second, 4, 5, 6, 7);
+  }
 }
 
 /// √x.
