@@ -63,6 +63,13 @@ struct Patch {
   std::size_t n_values() const { return x.size(); }
 };
 
+// Kernel settings without bulk viscosity: elastic and hourglass forces only.
+SolidKernelSettings elastic_settings() {
+  SolidKernelSettings settings;
+  settings.bulk_linear = settings.bulk_quadratic = 0;
+  return settings;
+}
+
 Eigen::Matrix3d rotation() {
   return Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
 }
@@ -70,9 +77,8 @@ Eigen::Matrix3d rotation() {
 TEST(ExplicitKernel, OnePointPatchTestOnDistortedMesh) {
   for (const bool batched : {true, false}) {
     Patch patch;
-    SolidKernelSettings settings;
+    SolidKernelSettings settings = elastic_settings();
     settings.batched = batched;
-    settings.bulk_linear = settings.bulk_quadratic = 0;
     const SolidElements elements =
         build_solid_elements(*patch.partition, *patch.materials, settings);
     // A homogeneous deformation u = A X: every element has F = I + A exactly.
@@ -119,9 +125,8 @@ TEST(ExplicitKernel, OnePointPatchTestOnDistortedMesh) {
 TEST(ExplicitKernel, OnePointStiffnessIsTheKernelsTangent) {
   for (const bool batched : {true, false}) {
     Patch patch;
-    SolidKernelSettings settings;
+    SolidKernelSettings settings = elastic_settings();
     settings.batched = batched;
-    settings.bulk_linear = settings.bulk_quadratic = 0;
     settings.hourglass_coefficient = 0.05;
     const SolidElements elements =
         build_solid_elements(*patch.partition, *patch.materials, settings);
@@ -167,9 +172,8 @@ TEST(ExplicitKernel, OnePointStiffnessIsTheKernelsTangent) {
 TEST(ExplicitKernel, RotatedStateHasRotatedForcesAndEqualEnergies) {
   for (const bool full : {false, true}) {
     Patch patch;
-    SolidKernelSettings settings;
+    SolidKernelSettings settings = elastic_settings();
     settings.full_integration = full;
-    settings.bulk_linear = settings.bulk_quadratic = 0;
     const SolidElements elements =
         build_solid_elements(*patch.partition, *patch.materials, settings);
     // Any deformation, hourglass modes included; then the same deformation rotated by R.
