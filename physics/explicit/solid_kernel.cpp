@@ -158,7 +158,7 @@ SolidElements build_solid_elements(const MeshPartition& partition, const Materia
 SolidForceTotals add_internal_forces(const SolidElements& elements,
                                      const SolidKernelSettings& settings, const double* coordinates,
                                      const double* u, const double* v, double* forces) {
-  if (settings.batched && elements.n_points == 1)
+  if (settings.batched && elements.n_points == 1 && batched_kernel_available())
     return add_internal_forces_batched(elements, settings, coordinates, u, v, forces);
   SolidForceTotals totals;
   double strain = 0, hourglass_energy = 0, hourglass_power = 0, viscous_power = 0;

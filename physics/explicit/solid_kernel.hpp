@@ -33,8 +33,9 @@ struct SolidKernelSettings {
   double hourglass_coefficient = 0.03;                 ///< κ of the hourglass form
   double bulk_linear = 0.06;                           ///< linear bulk viscosity coefficient
   double bulk_quadratic = 1.5;                         ///< quadratic bulk viscosity coefficient
-  /// One-point elements in SIMD batches of kLanes (add_internal_forces_batched()); false: one at
-  /// a time, the scalar reference. Full integration is always scalar.
+  /// One-point elements in SIMD batches of kLanes (add_internal_forces_batched()) where the CPU
+  /// has AVX-512 (batched_kernel_available()); false: one at a time, the scalar reference. Full
+  /// integration is always scalar.
   bool batched = true;
 };
 
@@ -90,10 +91,16 @@ SolidForceTotals add_internal_forces(const SolidElements& elements,
                                      const SolidKernelSettings& settings, const double* coordinates,
                                      const double* u, const double* v, double* forces);
 
+/// Whether this CPU runs the batched kernel (it has AVX-512; elsewhere the scalar kernel is
+/// faster and add_internal_forces() uses it).
+bool batched_kernel_available();
+
 /// add_internal_forces() for one-point elements, kLanes elements at a time in SIMD lanes
 /// (solid_kernel_batched.cpp): the same arithmetic as the scalar kernel, so forces, energies and
 /// steps equal its own to round-off (fused multiply-adds and the order of the sums differ). The
-/// last batch is filled with copies of its last element, whose results are dropped.
+/// last batch is filled with copies of its last element, whose results are dropped. Only where
+/// batched_kernel_available(); \p coordinates must be those the elements were built from (the
+/// hourglass projections are recomputed from them).
 SolidForceTotals add_internal_forces_batched(const SolidElements& elements,
                                              const SolidKernelSettings& settings,
                                              const double* coordinates, const double* u,

@@ -12,8 +12,8 @@
 
 namespace railfe {
 
-/// Inlined always, so that each SIMD clone of the batched kernel (target_clones) compiles the
-/// element arithmetic for its own instruction set.
+/// Inlined always, so that the batched kernel, compiled for AVX-512 by a target attribute,
+/// compiles the element arithmetic for that instruction set whatever the build's -march.
 #define RAILFE_LANE_INLINE inline __attribute__((always_inline))
 
 /// Elements per batch of the batched kernel.

@@ -89,7 +89,7 @@ def compare_kernels(args):
                     "wall_us_per_element_step": 1e6 * step["time: stepping [s]"] / element_steps,
                     "cpu_us_per_element_step":
                         "" if cpu is None else 1e6 * cpu / element_steps,
-                    "strain_energy_J": summary.get("energy", {}).get("strain [J]", ""),
+                    "energy_error_at_end": step["energy error at end"],
                 })
                 print(f"{n ** 3} elements, {label}: wall {runs[-1]['wall_us_per_element_step']:.4f}"
                       f" us, CPU {runs[-1]['cpu_us_per_element_step']} us", flush=True)
@@ -105,7 +105,8 @@ def compare_kernels(args):
         best = {}
         for label, _, _ in configurations:
             mine = [r for r in runs if r["elements"] == n ** 3 and r["kernel"] == label]
-            cpus = [r["cpu_us_per_element_step"] for r in mine if r["cpu_us_per_element_step"] != ""]
+            cpus = [r["cpu_us_per_element_step"] for r in mine
+                    if r["cpu_us_per_element_step"] != ""]
             best[label] = (min(r["wall_us_per_element_step"] for r in mine),
                            min(cpus) if cpus else None)
         for label, (wall, cpu) in best.items():
