@@ -7,24 +7,6 @@
 
 namespace railfe {
 
-namespace {
-
-// The hourglass base vectors h_α (ξη, ηζ, ζξ, ξηζ at the nodes).
-struct HourglassBase {
-  double h[4][8];
-  HourglassBase() {
-    for (int a = 0; a < 8; ++a) {
-      const double* r = kHex8NodeReference[a];
-      const double products[4] = {r[0] * r[1], r[1] * r[2], r[2] * r[0], r[0] * r[1] * r[2]};
-      for (int alpha = 0; alpha < 4; ++alpha)
-        h[alpha][a] = products[alpha];
-    }
-  }
-};
-const HourglassBase kHourglassBase;
-
-}  // namespace
-
 double hex8_mean_gradients(const double x[8][3], double gradient[24]) {
   const Hex8GaussTable& table = hex8_gauss_table();
   std::fill(gradient, gradient + 24, 0.0);
@@ -47,18 +29,9 @@ void hex8_hourglass_projections(const double x[8][3], double projection[12]) {
     for (int i = 0; i < 3; ++i) {
       double sum = 0;
       for (int a = 0; a < 8; ++a)
-        sum += kHourglassBase.h[alpha][a] * x[a][i];
+        sum += kHex8HourglassBase.h[alpha][a] * x[a][i];
       projection[alpha * 3 + i] = sum;
     }
-}
-
-void hex8_hourglass_vectors(const double* projection, const double* gradient, double gamma[32]) {
-  for (int alpha = 0; alpha < 4; ++alpha) {
-    const double* p = projection + 3 * alpha;
-    for (int a = 0; a < 8; ++a)
-      gamma[alpha * 8 + a] = kHourglassBase.h[alpha][a] - p[0] * gradient[a] -
-                             p[1] * gradient[8 + a] - p[2] * gradient[16 + a];
-  }
 }
 
 double hex8_hourglass_stiffness(const double* gradient, double volume, const LameConstants& lame,

@@ -205,7 +205,13 @@ ParameterSpec explicit_parameters() {
              Range::non_negative());
   solid.real("Bulk viscosity quadratic", 1.5, "Quadratic bulk viscosity coefficient (0 = off).", "",
              Range::non_negative());
-  solid.only_when("Integration", {"one point"}, {"Hourglass control", "Hourglass coefficient"});
+  solid.choice(
+      "Kernel", "batched",
+      {{"batched", "8 elements per SIMD batch where the CPU has AVX-512, else scalar"},
+       {"scalar", "one element at a time (the reference the batched kernel is tested on)"}},
+      "How one-point elements are evaluated; both give the same forces to round-off.");
+  solid.only_when("Integration", {"one point"},
+                  {"Hourglass control", "Hourglass coefficient", "Kernel"});
   spec.sublist("Solid", solid, "Hex8 formulation.");
   load_parameters(spec);
   spec.sublist("Discrete parts", discrete_parameters(), "Masses, rigid bodies, springs.");
@@ -468,6 +474,7 @@ ExplicitSettings read_explicit_settings(const Teuchos::ParameterList& step, cons
   settings.kernel.hourglass_coefficient = solid.get<double>("Hourglass coefficient");
   settings.kernel.bulk_linear = solid.get<double>("Bulk viscosity linear");
   settings.kernel.bulk_quadratic = solid.get<double>("Bulk viscosity quadratic");
+  settings.kernel.batched = solid.get<std::string>("Kernel") == "batched";
   read_loads(step, deck, path, settings);
   read_discrete(step.sublist("Discrete parts"), deck, path + "/Discrete parts", settings);
   read_output(step.sublist("Output"), deck, path, settings);

@@ -13,28 +13,12 @@
 #include "physics/common/solid_assembly.hpp"
 #include "physics/elements/hex8.hpp"
 #include "physics/elements/hex8_one_point.hpp"
+#include "physics/explicit/solid_element_forces.hpp"
 #include "physics/materials/elastic_material.hpp"
 
 namespace railfe {
 
 namespace {
-
-// Largest face area of an element with corners x (Exodus face order).
-double largest_face_area(const double x[8][3]) {
-  double largest = 0;
-  for (const auto& face : kHex8FaceNodes) {
-    const double* p0 = x[face[0]];
-    const double* p1 = x[face[1]];
-    const double* p2 = x[face[2]];
-    const double* p3 = x[face[3]];
-    const double d1[3] = {p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]};
-    const double d2[3] = {p3[0] - p1[0], p3[1] - p1[1], p3[2] - p1[2]};
-    const double c[3] = {d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2],
-                         d1[0] * d2[1] - d1[1] * d2[0]};
-    largest = std::max(largest, c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
-  }
-  return 0.5 * std::sqrt(largest);
-}
 
 // ω² of the hourglass stiffness on lumped masses m: C λ_max(Γ), Γ_αβ = Σ_a γ_αa γ_βa / m_a.
 double hourglass_frequency_squared(const double gamma[32], const double masses[8],
@@ -97,6 +81,7 @@ SolidElements build_solid_elements(const MeshPartition& partition, const Materia
   const LocalIndex n = static_cast<LocalIndex>(order.size());
   const int n_points = settings.full_integration ? 8 : 1;
   elements.n_elements = n;
+  elements.n_nodes = partition.n_local_nodes();
   elements.n_points = n_points;
   elements.nodes.resize(8 * static_cast<std::size_t>(n));
   elements.gradients.resize(24 * static_cast<std::size_t>(n) * n_points);
@@ -170,93 +155,16 @@ SolidElements build_solid_elements(const MeshPartition& partition, const Materia
   return elements;
 }
 
-namespace {
-
-// Adds the forces of one integration point with gradients g (g[i*8+a]) and weight w (reference
-// volume) and returns its strain energy; accumulates bulk-viscous power and returns the rate of
-// volume change tr(Ḟ F⁻¹) through div.
-inline double add_point_forces(const double* g, double w, const double ue[8][3],
-                               const double ve[8][3], double lambda, double mu, double density,
-                               double wave_speed, double length, const SolidKernelSettings& s,
-                               double fe[8][3], double& viscous_power, double& jacobian,
-                               double& div) {
-  double H[3][3] = {};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      double sum = 0;
-      for (int a = 0; a < 8; ++a)
-        sum += ue[a][i] * g[j * 8 + a];
-      H[i][j] = sum;
-    }
-  double E[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      E[i][j] =
-          0.5 * (H[i][j] + H[j][i] + H[0][i] * H[0][j] + H[1][i] * H[1][j] + H[2][i] * H[2][j]);
-  const double trace = E[0][0] + E[1][1] + E[2][2];
-  double S[3][3];
-  double contraction = 0;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      S[i][j] = 2 * mu * E[i][j] + (i == j ? lambda * trace : 0.0);
-      contraction += E[i][j] * E[i][j];
-    }
-  double F[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      F[i][j] = H[i][j] + (i == j ? 1.0 : 0.0);
-  double P[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      P[i][j] = F[i][0] * S[0][j] + F[i][1] * S[1][j] + F[i][2] * S[2][j];
-
-  // Cofactor J F⁻ᵀ: gives J, the rate of volume change and the bulk-viscous PK1 stress −q J F⁻ᵀ.
-  const double C[3][3] = {
-      {F[1][1] * F[2][2] - F[1][2] * F[2][1], F[1][2] * F[2][0] - F[1][0] * F[2][2],
-       F[1][0] * F[2][1] - F[1][1] * F[2][0]},
-      {F[0][2] * F[2][1] - F[0][1] * F[2][2], F[0][0] * F[2][2] - F[0][2] * F[2][0],
-       F[0][1] * F[2][0] - F[0][0] * F[2][1]},
-      {F[0][1] * F[1][2] - F[0][2] * F[1][1], F[0][2] * F[1][0] - F[0][0] * F[1][2],
-       F[0][0] * F[1][1] - F[0][1] * F[1][0]}};
-  jacobian = F[0][0] * C[0][0] + F[0][1] * C[0][1] + F[0][2] * C[0][2];
-  div = 0;
-  if (s.bulk_linear > 0 || s.bulk_quadratic > 0) {
-    double rate = 0;
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        double Fdot = 0;
-        for (int a = 0; a < 8; ++a)
-          Fdot += ve[a][i] * g[j * 8 + a];
-        rate += Fdot * C[i][j];
-      }
-    div = rate / jacobian;
-    if (div < 0) {
-      const double q = density / jacobian * length *
-                       (s.bulk_quadratic * s.bulk_quadratic * length * div * div -
-                        s.bulk_linear * wave_speed * div);
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-          P[i][j] -= q * C[i][j];
-      viscous_power += q * (-div) * jacobian * w;
-    }
-  }
-  for (int a = 0; a < 8; ++a)
-    for (int i = 0; i < 3; ++i)
-      fe[a][i] += w * (P[i][0] * g[a] + P[i][1] * g[8 + a] + P[i][2] * g[16 + a]);
-  return w * (0.5 * lambda * trace * trace + mu * contraction);
-}
-
-}  // namespace
-
 SolidForceTotals add_internal_forces(const SolidElements& elements,
                                      const SolidKernelSettings& settings, const double* coordinates,
                                      const double* u, const double* v, double* forces) {
+  if (settings.batched && elements.n_points == 1 && batched_kernel_available())
+    return add_internal_forces_batched(elements, settings, coordinates, u, v, forces);
   SolidForceTotals totals;
   double strain = 0, hourglass_energy = 0, hourglass_power = 0, viscous_power = 0;
   const int n_points = elements.n_points;
   const bool stiffness_form = settings.hourglass == HourglassForm::stiffness;
   const bool hourglass = !settings.full_integration && settings.hourglass != HourglassForm::none;
-  const bool bulk = settings.bulk_linear > 0 || settings.bulk_quadratic > 0;
   for (LocalIndex e = 0; e < elements.n_elements; ++e) {
     const LocalIndex* nodes = &elements.nodes[8 * static_cast<std::size_t>(e)];
     double ue[8][3], ve[8][3], xe[8][3], fe[8][3] = {};
@@ -267,57 +175,35 @@ SolidForceTotals add_internal_forces(const SolidElements& elements,
         ve[a][i] = v[k];
         xe[a][i] = coordinates[k] + u[k];
       }
-    // Current characteristic length: current volume over the largest current face.
-    const double lambda = elements.lambda[e], mu = elements.mu[e];
-    const double density = elements.density[e], c = elements.wave_speed[e];
-    const double reference_length = elements.length[e];
-    double length = reference_length;
+    const SolidElementConstants<double> constants{elements.lambda[e], elements.mu[e],
+                                                  elements.density[e], elements.wave_speed[e],
+                                                  elements.length[e]};
     double volume = 0, compression = 0;
     const double* gradient = &elements.gradients[24 * static_cast<std::size_t>(e) * n_points];
     for (int q = 0; q < n_points; ++q) {
       double jacobian = 1, div = 0;
       const double w = n_points == 1 ? elements.volume[e]
                                      : elements.weights[static_cast<std::size_t>(e) * n_points + q];
-      strain += add_point_forces(gradient + 24 * q, w, ue, ve, lambda, mu, density, c, length,
-                                 settings, fe, viscous_power, jacobian, div);
+      strain += add_point_forces(gradient + 24 * q, w, ue, ve, constants, settings, fe,
+                                 viscous_power, jacobian, div);
       volume += jacobian * w;
       compression = std::min(compression, div);
     }
-    length = volume / largest_face_area(xe);
+    // Current characteristic length: current volume over the largest current face.
+    const double length = volume / largest_face_area(xe);
     if (hourglass) {
       double gamma[32];
       hex8_hourglass_vectors(&elements.hourglass_projection[12 * static_cast<std::size_t>(e)],
                              gradient, gamma);
-      const double scale = elements.hourglass_scale[e];
-      const double(*field)[3] = stiffness_form ? ue : ve;
-      for (int alpha = 0; alpha < 4; ++alpha) {
-        const double* g = gamma + 8 * alpha;
-        double q[3] = {0, 0, 0};
-        for (int a = 0; a < 8; ++a)
-          for (int i = 0; i < 3; ++i)
-            q[i] += g[a] * field[a][i];
-        const double qq = q[0] * q[0] + q[1] * q[1] + q[2] * q[2];
-        if (stiffness_form)
-          hourglass_energy += 0.5 * scale * qq;
-        else
-          hourglass_power += scale * qq;
-        for (int a = 0; a < 8; ++a)
-          for (int i = 0; i < 3; ++i)
-            fe[a][i] += scale * g[a] * q[i];
-      }
+      add_hourglass_forces(gamma, elements.hourglass_scale[e], stiffness_form ? ue : ve,
+                           stiffness_form, fe, hourglass_energy, hourglass_power);
     }
     for (int a = 0; a < 8; ++a)
       for (int i = 0; i < 3; ++i)
         forces[3 * static_cast<std::size_t>(nodes[a]) + i] += fe[a][i];
 
-    double step = elements.stable_step[e] * length / reference_length;
-    if (bulk) {
-      // The linear term always counts, so the step does not jump when round-off flips the sign
-      // of a vanishing volume rate; the quadratic one grows continuously from zero.
-      const double xi = settings.bulk_linear + settings.bulk_quadratic * settings.bulk_quadratic *
-                                                   length * (-compression) / c;
-      step /= xi + std::sqrt(1 + xi * xi);
-    }
+    const double step = current_stable_step(elements.stable_step[e], elements.length[e], length,
+                                            compression, elements.wave_speed[e], settings);
     if (step < totals.stable_step) {
       totals.stable_step = step;
       totals.critical_element = e;

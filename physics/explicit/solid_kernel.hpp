@@ -33,12 +33,17 @@ struct SolidKernelSettings {
   double hourglass_coefficient = 0.03;                 ///< κ of the hourglass form
   double bulk_linear = 0.06;                           ///< linear bulk viscosity coefficient
   double bulk_quadratic = 1.5;                         ///< quadratic bulk viscosity coefficient
+  /// One-point elements in SIMD batches of kLanes (add_internal_forces_batched()) where the CPU
+  /// has AVX-512 (batched_kernel_available()); false: one at a time, the scalar reference. Full
+  /// integration is always scalar.
+  bool batched = true;
 };
 
 /// The hex8 elements of one rank, structure of arrays (element e's data at e × stride).
 struct SolidElements {
-  LocalIndex n_elements = 0;                ///< number of elements
-  int n_points = 1;                         ///< integration points per element (1 or 8)
+  LocalIndex n_elements = 0;  ///< number of elements
+  LocalIndex n_nodes = 0;     ///< local nodes: the nodal arrays the kernel reads hold 3 × n_nodes
+  int n_points = 1;           ///< integration points per element (1 or 8)
   std::vector<LocalIndex> nodes;            ///< 8 local node indices per element
   std::vector<LocalIndex> partition_index;  ///< element's index in the partition's block order
   std::vector<GlobalIndex> global_element;  ///< element's global index in the mesh
@@ -85,6 +90,21 @@ SolidElements build_solid_elements(const MeshPartition& partition, const Materia
 SolidForceTotals add_internal_forces(const SolidElements& elements,
                                      const SolidKernelSettings& settings, const double* coordinates,
                                      const double* u, const double* v, double* forces);
+
+/// Whether this CPU runs the batched kernel (it has AVX-512; elsewhere the scalar kernel is
+/// faster and add_internal_forces() uses it).
+bool batched_kernel_available();
+
+/// add_internal_forces() for one-point elements, kLanes elements at a time in SIMD lanes
+/// (solid_kernel_batched.cpp): the same arithmetic as the scalar kernel, so forces, energies and
+/// steps equal its own to round-off (fused multiply-adds and the order of the sums differ). The
+/// last batch is filled with copies of its last element, whose results are dropped. Only where
+/// batched_kernel_available(); \p coordinates must be those the elements were built from (the
+/// hourglass projections are recomputed from them).
+SolidForceTotals add_internal_forces_batched(const SolidElements& elements,
+                                             const SolidKernelSettings& settings,
+                                             const double* coordinates, const double* u,
+                                             const double* v, double* forces);
 
 /// The smallest stable step over every rank's elements and where it is, as "element 12 of block
 /// 'rail' at (x, y, z) m" (collective). \p step gives each element's step (e.g. the reference

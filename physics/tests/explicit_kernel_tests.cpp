@@ -35,16 +35,20 @@ struct Patch {
   std::vector<double> x;  // local node coordinates
   GlobalIndex centre = 13;
 
-  explicit Patch(bool distort = true) {
+  /// \p counts elements of 0.1 m along x, y, z; \p jitter moves every node by up to that much
+  /// along each axis (a smooth pseudo-random pattern), on top of the centre node's move.
+  explicit Patch(bool distort = true, std::array<int, 3> counts = {2, 2, 2}, double jitter = 0) {
     BoxSpec spec;
-    spec.elements = {2, 2, 2};
-    spec.lengths = {0.2, 0.2, 0.2};
+    spec.elements = counts;
+    spec.lengths = {0.1 * counts[0], 0.1 * counts[1], 0.1 * counts[2]};
     mesh = generate_box(spec);
     if (distort) {
       mesh.coordinates[3 * centre] += 0.013;
       mesh.coordinates[3 * centre + 1] -= 0.021;
       mesh.coordinates[3 * centre + 2] += 0.008;
     }
+    for (std::size_t k = 0; k < mesh.coordinates.size(); ++k)
+      mesh.coordinates[k] += jitter * std::sin(2.3 * static_cast<double>(k) + 0.4);
     partition = std::make_unique<MeshPartition>(mesh, comm, PartitionMethod::block);
     Teuchos::ParameterList list;
     auto& steel = list.sublist("steel");
@@ -59,48 +63,58 @@ struct Patch {
   std::size_t n_values() const { return x.size(); }
 };
 
+// Kernel settings without bulk viscosity: elastic and hourglass forces only.
+SolidKernelSettings elastic_settings() {
+  SolidKernelSettings settings;
+  settings.bulk_linear = settings.bulk_quadratic = 0;
+  return settings;
+}
+
 Eigen::Matrix3d rotation() {
   return Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
 }
 
 TEST(ExplicitKernel, OnePointPatchTestOnDistortedMesh) {
-  Patch patch;
-  SolidKernelSettings settings;
-  settings.bulk_linear = settings.bulk_quadratic = 0;
-  const SolidElements elements = build_solid_elements(*patch.partition, *patch.materials, settings);
-  // A homogeneous deformation u = A X: every element has F = I + A exactly.
-  Eigen::Matrix3d A;
-  A << 1e-3, 2e-4, -3e-4, 5e-4, -7e-4, 1e-4, 2e-4, 3e-4, 6e-4;
-  std::vector<double> u(patch.n_values()), v(patch.n_values(), 0.0), f(patch.n_values(), 0.0);
-  for (std::size_t n = 0; n < u.size() / 3; ++n) {
-    const Eigen::Vector3d X(patch.x[3 * n], patch.x[3 * n + 1], patch.x[3 * n + 2]);
-    const Eigen::Vector3d displacement = A * X;
+  for (const bool batched : {true, false}) {
+    Patch patch;
+    SolidKernelSettings settings = elastic_settings();
+    settings.batched = batched;
+    const SolidElements elements =
+        build_solid_elements(*patch.partition, *patch.materials, settings);
+    // A homogeneous deformation u = A X: every element has F = I + A exactly.
+    Eigen::Matrix3d A;
+    A << 1e-3, 2e-4, -3e-4, 5e-4, -7e-4, 1e-4, 2e-4, 3e-4, 6e-4;
+    std::vector<double> u(patch.n_values()), v(patch.n_values(), 0.0), f(patch.n_values(), 0.0);
+    for (std::size_t n = 0; n < u.size() / 3; ++n) {
+      const Eigen::Vector3d X(patch.x[3 * n], patch.x[3 * n + 1], patch.x[3 * n + 2]);
+      const Eigen::Vector3d displacement = A * X;
+      for (int d = 0; d < 3; ++d)
+        u[3 * n + d] = displacement[d];
+    }
+    const SolidForceTotals totals =
+        add_internal_forces(elements, settings, patch.x.data(), u.data(), v.data(), f.data());
+    // The interior node's forces cancel (the patch test) and no hourglass energy appears.
+    const LocalIndex centre = patch.partition->local_node(patch.centre);
+    const double scale = std::abs(f[0]) + std::abs(f[1]) + std::abs(f[2]);
     for (int d = 0; d < 3; ++d)
-      u[3 * n + d] = displacement[d];
-  }
-  const SolidForceTotals totals =
-      add_internal_forces(elements, settings, patch.x.data(), u.data(), v.data(), f.data());
-  // The interior node's forces cancel (the patch test) and no hourglass energy appears.
-  const LocalIndex centre = patch.partition->local_node(patch.centre);
-  const double scale = std::abs(f[0]) + std::abs(f[1]) + std::abs(f[2]);
-  for (int d = 0; d < 3; ++d)
-    EXPECT_NEAR(f[3 * centre + d], 0.0, 1e-12 * scale);
-  EXPECT_NEAR(totals.hourglass_energy, 0.0, 1e-20);
-  // Stress and energy are the St. Venant-Kirchhoff values of F = I + A.
-  const Eigen::Matrix3d F = Eigen::Matrix3d::Identity() + A;
-  const Eigen::Matrix3d E = 0.5 * (F.transpose() * F - Eigen::Matrix3d::Identity());
-  const double lambda = kYoung * kPoisson / ((1 + kPoisson) * (1 - 2 * kPoisson));
-  const double mu = kYoung / (2 * (1 + kPoisson));
-  const Eigen::Matrix3d S = lambda * E.trace() * Eigen::Matrix3d::Identity() + 2 * mu * E;
-  const Eigen::Matrix3d sigma = F * S * F.transpose() / F.determinant();
-  const double energy_density = 0.5 * lambda * std::pow(E.trace(), 2) + mu * E.squaredNorm();
-  EXPECT_NEAR(totals.strain_energy, energy_density * 0.008, 1e-10 * energy_density * 0.008);
-  for (LocalIndex e = 0; e < elements.n_elements; ++e) {
-    double stress[6];
-    element_cauchy_stress(elements, e, u.data(), stress);
-    EXPECT_NEAR(stress[0], sigma(0, 0), 1e-9 * std::abs(sigma(0, 0)));
-    EXPECT_NEAR(stress[3], sigma(0, 1), 1e-9 * std::abs(sigma(0, 0)));
-    EXPECT_NEAR(stress[5], sigma(2, 0), 1e-9 * std::abs(sigma(0, 0)));
+      EXPECT_NEAR(f[3 * centre + d], 0.0, 1e-12 * scale) << (batched ? "batched" : "scalar");
+    EXPECT_NEAR(totals.hourglass_energy, 0.0, 1e-20);
+    // Stress and energy are the St. Venant-Kirchhoff values of F = I + A.
+    const Eigen::Matrix3d F = Eigen::Matrix3d::Identity() + A;
+    const Eigen::Matrix3d E = 0.5 * (F.transpose() * F - Eigen::Matrix3d::Identity());
+    const double lambda = kYoung * kPoisson / ((1 + kPoisson) * (1 - 2 * kPoisson));
+    const double mu = kYoung / (2 * (1 + kPoisson));
+    const Eigen::Matrix3d S = lambda * E.trace() * Eigen::Matrix3d::Identity() + 2 * mu * E;
+    const Eigen::Matrix3d sigma = F * S * F.transpose() / F.determinant();
+    const double energy_density = 0.5 * lambda * std::pow(E.trace(), 2) + mu * E.squaredNorm();
+    EXPECT_NEAR(totals.strain_energy, energy_density * 0.008, 1e-10 * energy_density * 0.008);
+    for (LocalIndex e = 0; e < elements.n_elements; ++e) {
+      double stress[6];
+      element_cauchy_stress(elements, e, u.data(), stress);
+      EXPECT_NEAR(stress[0], sigma(0, 0), 1e-9 * std::abs(sigma(0, 0)));
+      EXPECT_NEAR(stress[3], sigma(0, 1), 1e-9 * std::abs(sigma(0, 0)));
+      EXPECT_NEAR(stress[5], sigma(2, 0), 1e-9 * std::abs(sigma(0, 0)));
+    }
   }
 }
 
@@ -109,54 +123,57 @@ TEST(ExplicitKernel, OnePointPatchTestOnDistortedMesh) {
 // central difference (f(u) − f(−u)) / 2 of the kernel's forces (the quadratic terms of St.
 // Venant–Kirchhoff cancel; the cubic ones are 1e-12 of the force at strains of 1e-6).
 TEST(ExplicitKernel, OnePointStiffnessIsTheKernelsTangent) {
-  Patch patch;
-  SolidKernelSettings settings;
-  settings.bulk_linear = settings.bulk_quadratic = 0;
-  settings.hourglass_coefficient = 0.05;
-  const SolidElements elements = build_solid_elements(*patch.partition, *patch.materials, settings);
-  const std::size_t n = patch.n_values();
-  std::vector<double> u(n), minus_u(n), v(n, 0.0), f_plus(n, 0.0), f_minus(n, 0.0);
-  for (std::size_t k = 0; k < n; ++k) {
-    u[k] = 1e-7 * std::sin(1.7 * static_cast<double>(k) + 0.3);  // no linear field: hourglass too
-    minus_u[k] = -u[k];
-  }
-  add_internal_forces(elements, settings, patch.x.data(), u.data(), v.data(), f_plus.data());
-  add_internal_forces(elements, settings, patch.x.data(), minus_u.data(), v.data(), f_minus.data());
-  std::vector<double> ku(n, 0.0);
-  const LameConstants lame = patch.materials->of_block(0).lame();
-  double hourglass_share = 0;
-  for (LocalIndex e = 0; e < elements.n_elements; ++e) {
-    const LocalIndex* nodes = &elements.nodes[8 * static_cast<std::size_t>(e)];
-    double x[8][3];
-    for (int a = 0; a < 8; ++a)
-      for (int d = 0; d < 3; ++d)
-        x[a][d] = patch.x[3 * nodes[a] + d];
-    double k_one_point[576], k_no_hourglass[576];
-    hex8_one_point_stiffness(x, lame, settings.hourglass_coefficient, k_one_point);
-    hex8_one_point_stiffness(x, lame, 0, k_no_hourglass);
-    for (int i = 0; i < 24; ++i)
-      for (int j = 0; j < 24; ++j) {
-        const double uj = u[3 * nodes[j / 3] + j % 3];
-        ku[3 * nodes[i / 3] + i % 3] += k_one_point[24 * i + j] * uj;
-        hourglass_share += std::abs((k_one_point[24 * i + j] - k_no_hourglass[24 * i + j]) * uj);
-      }
-  }
-  ASSERT_GT(hourglass_share, 0);  // the displacement excites the hourglass modes
-  double scale = 0;
-  for (double value : ku)
-    scale = std::max(scale, std::abs(value));
-  for (std::size_t k = 0; k < n; ++k) {
-    const double tangent = 0.5 * (f_plus[k] - f_minus[k]);
-    EXPECT_NEAR(tangent, ku[k], 1e-9 * scale) << "value " << k;
+  for (const bool batched : {true, false}) {
+    Patch patch;
+    SolidKernelSettings settings = elastic_settings();
+    settings.batched = batched;
+    settings.hourglass_coefficient = 0.05;
+    const SolidElements elements =
+        build_solid_elements(*patch.partition, *patch.materials, settings);
+    const std::size_t n = patch.n_values();
+    std::vector<double> u(n), minus_u(n), v(n, 0.0), f_plus(n, 0.0), f_minus(n, 0.0);
+    for (std::size_t k = 0; k < n; ++k) {
+      u[k] = 1e-7 * std::sin(1.7 * static_cast<double>(k) + 0.3);  // no linear field: hourglass too
+      minus_u[k] = -u[k];
+    }
+    add_internal_forces(elements, settings, patch.x.data(), u.data(), v.data(), f_plus.data());
+    add_internal_forces(elements, settings, patch.x.data(), minus_u.data(), v.data(),
+                        f_minus.data());
+    std::vector<double> ku(n, 0.0);
+    const LameConstants lame = patch.materials->of_block(0).lame();
+    double hourglass_share = 0;
+    for (LocalIndex e = 0; e < elements.n_elements; ++e) {
+      const LocalIndex* nodes = &elements.nodes[8 * static_cast<std::size_t>(e)];
+      double x[8][3];
+      for (int a = 0; a < 8; ++a)
+        for (int d = 0; d < 3; ++d)
+          x[a][d] = patch.x[3 * nodes[a] + d];
+      double k_one_point[576], k_no_hourglass[576];
+      hex8_one_point_stiffness(x, lame, settings.hourglass_coefficient, k_one_point);
+      hex8_one_point_stiffness(x, lame, 0, k_no_hourglass);
+      for (int i = 0; i < 24; ++i)
+        for (int j = 0; j < 24; ++j) {
+          const double uj = u[3 * nodes[j / 3] + j % 3];
+          ku[3 * nodes[i / 3] + i % 3] += k_one_point[24 * i + j] * uj;
+          hourglass_share += std::abs((k_one_point[24 * i + j] - k_no_hourglass[24 * i + j]) * uj);
+        }
+    }
+    ASSERT_GT(hourglass_share, 0);  // the displacement excites the hourglass modes
+    double scale = 0;
+    for (double value : ku)
+      scale = std::max(scale, std::abs(value));
+    for (std::size_t k = 0; k < n; ++k) {
+      const double tangent = 0.5 * (f_plus[k] - f_minus[k]);
+      EXPECT_NEAR(tangent, ku[k], 1e-9 * scale) << "value " << k << (batched ? " batched" : "");
+    }
   }
 }
 
 TEST(ExplicitKernel, RotatedStateHasRotatedForcesAndEqualEnergies) {
   for (const bool full : {false, true}) {
     Patch patch;
-    SolidKernelSettings settings;
+    SolidKernelSettings settings = elastic_settings();
     settings.full_integration = full;
-    settings.bulk_linear = settings.bulk_quadratic = 0;
     const SolidElements elements =
         build_solid_elements(*patch.partition, *patch.materials, settings);
     // Any deformation, hourglass modes included; then the same deformation rotated by R.
@@ -191,6 +208,65 @@ TEST(ExplicitKernel, RotatedStateHasRotatedForcesAndEqualEnergies) {
       for (int k = 0; k < 3; ++k)
         EXPECT_NEAR(f_rotated[3 * n + k], expected[k], 1e-9 * largest) << (full ? "full" : "one");
     }
+  }
+}
+
+// The batched kernel (kLanes elements per SIMD batch) is the scalar kernel's arithmetic on lanes:
+// forces, energies, powers and the stable step must equal the scalar kernel's to round-off, for
+// each hourglass form. 3 x 3 x 2 elements make two full batches and a last one of two (padded
+// with copies whose results must not count); every node is moved, strains are large (~1 %), the
+// displacement excites the hourglass modes, and the velocities compress some elements and
+// stretch others, so that lanes of one batch take both sides of the bulk viscosity's switch.
+TEST(ExplicitKernel, BatchedKernelEqualsScalarKernelToRoundOff) {
+  if (!batched_kernel_available())
+    GTEST_SKIP() << "no AVX-512 here: add_internal_forces() runs the scalar kernel";
+  Patch patch(true, {3, 3, 2}, 0.012);
+  const std::size_t n = patch.n_values();
+  std::vector<double> u(n), v(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    u[k] = 1e-3 * std::sin(1.7 * static_cast<double>(k) + 0.3);
+    v[k] = 2.0 * std::cos(0.9 * static_cast<double>(k) + 1.1);
+  }
+  for (const HourglassForm form :
+       {HourglassForm::stiffness, HourglassForm::viscous, HourglassForm::none}) {
+    SolidKernelSettings settings;
+    settings.hourglass = form;
+    const SolidElements elements =
+        build_solid_elements(*patch.partition, *patch.materials, settings);
+    ASSERT_EQ(elements.n_elements, 18);
+    // Both signs of the volume rate div v = Σ_a v_a · ∇N̄_a occur (small strains: its sign).
+    int compressed = 0;
+    for (LocalIndex e = 0; e < elements.n_elements; ++e) {
+      double div = 0;
+      for (int a = 0; a < 8; ++a)
+        for (int i = 0; i < 3; ++i)
+          div += v[3 * elements.nodes[8 * e + a] + i] * elements.gradients[24 * e + 8 * i + a];
+      compressed += div < 0;
+    }
+    ASSERT_GT(compressed, 0);
+    ASSERT_LT(compressed, elements.n_elements);
+
+    std::vector<double> f_scalar(n, 0.0), f_batched(n, 0.0);
+    settings.batched = false;
+    const SolidForceTotals scalar = add_internal_forces(elements, settings, patch.x.data(),
+                                                        u.data(), v.data(), f_scalar.data());
+    settings.batched = true;
+    const SolidForceTotals batched = add_internal_forces(elements, settings, patch.x.data(),
+                                                         u.data(), v.data(), f_batched.data());
+    double largest = 0;
+    for (double value : f_scalar)
+      largest = std::max(largest, std::abs(value));
+    for (std::size_t k = 0; k < n; ++k)
+      EXPECT_NEAR(f_batched[k], f_scalar[k], 1e-14 * largest) << "value " << k;
+    EXPECT_NEAR(batched.strain_energy, scalar.strain_energy, 1e-14 * scalar.strain_energy);
+    EXPECT_NEAR(batched.viscous_power, scalar.viscous_power, 1e-14 * scalar.viscous_power);
+    EXPECT_GT(scalar.viscous_power, 0.0);
+    EXPECT_NEAR(batched.hourglass_energy, scalar.hourglass_energy, 1e-14 * scalar.hourglass_energy);
+    EXPECT_NEAR(batched.hourglass_power, scalar.hourglass_power, 1e-14 * scalar.hourglass_power);
+    EXPECT_EQ(scalar.hourglass_energy > 0, form == HourglassForm::stiffness);
+    EXPECT_EQ(scalar.hourglass_power > 0, form == HourglassForm::viscous);
+    EXPECT_NEAR(batched.stable_step, scalar.stable_step, 1e-15 * scalar.stable_step);
+    EXPECT_EQ(batched.critical_element, scalar.critical_element);
   }
 }
 
