@@ -164,8 +164,8 @@ std::string rail_geo_script(const RailDimensions& d) {
   // at 0.7-0.85 of the target (measured in rail_mesh_tests): never coarser than asked.
   geo << "Field[1] = Distance;\nField[1].CurvesList = {" << running.str()
       << "};\nField[1].NumPointsPerCurve = 200;\n";
-  geo << "Field[2] = Threshold;\nField[2].InField = 1;\nField[2].SizeMin = "
-      << d.head_element_size << ";\nField[2].SizeMax = " << d.section_element_size
+  geo << "Field[2] = Threshold;\nField[2].InField = 1;\nField[2].SizeMin = " << d.head_element_size
+      << ";\nField[2].SizeMax = " << d.section_element_size
       << ";\nField[2].DistMin = " << d.head_element_size << ";\nField[2].DistMax = 0.02;\n";
   geo << "Background Field = 2;\nMesh.MeshSizeFromPoints = 0;\nMesh.MeshSizeFromCurvature = 0;\n"
          "Mesh.MeshSizeExtendFromBoundary = 0;\n";
