@@ -152,4 +152,19 @@ LocalIndex MeshPartition::n_local_elements() const {
   return total;
 }
 
+std::vector<LocalIndex> owned_set_nodes(const MeshPartition& partition, const std::string& set) {
+  std::vector<LocalIndex> nodes;
+  if (set.empty()) {
+    for (LocalIndex node = 0; node < partition.n_owned_nodes(); ++node)
+      nodes.push_back(node);
+    return nodes;
+  }
+  for (GlobalIndex node : partition.mesh().node_set(set, "", "").nodes) {
+    const LocalIndex local = partition.local_node(node);
+    if (local >= 0 && local < partition.n_owned_nodes())
+      nodes.push_back(local);
+  }
+  return nodes;
+}
+
 }  // namespace railfe

@@ -89,4 +89,8 @@ class MeshPartition {
   std::vector<LocalIndex> first_local_elements_;
 };
 
+/// The owned local nodes of node set \p set of \p partition ("" = every owned node): what a
+/// condition on a node set acts on, on this rank.
+std::vector<LocalIndex> owned_set_nodes(const MeshPartition& partition, const std::string& set);
+
 }  // namespace railfe

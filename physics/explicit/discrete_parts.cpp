@@ -96,6 +96,7 @@ DiscreteParts::DiscreteParts(const ExplicitSettings& settings, const MeshPartiti
       body.motion[d] = static_cast<int>(motion_functions_.size());
       motion_functions_.emplace_back(spec.motion[d], deck,
                                      where + "/Motion " + std::string(1, "xyz"[d]));
+      motion_start_.push_back(motion_functions_.back()(0, 0, 0, 0));
       body.velocity[d] = motion_at(body.motion[d], 0, 0)[1];
     }
     const std::array<bool, 3> locked =
@@ -187,8 +188,8 @@ void DiscreteParts::predict(double dt, NodalArrays& nodes) {
       if (body.motion[d] < 0)
         continue;
       const auto next = motion_at(body.motion[d], time_ + dt, dt);
-      const double start = motion_functions_[body.motion[d]](0, 0, 0, 0);
-      step[d] = body.motion_origin[d] + next[0] - start - body.displacement[d];
+      step[d] =
+          body.motion_origin[d] + next[0] - motion_start_[body.motion[d]] - body.displacement[d];
       body.velocity[d] = next[1];
     }
     body.displacement += step;

@@ -133,6 +133,7 @@ class DiscreteParts {
   std::vector<BodyMoment> moments_;
   std::vector<Expression> moment_functions_;
   std::vector<Expression> motion_functions_;  // prescribed translations of bodies
+  std::vector<double> motion_start_;          // each one's value at t = 0
   double time_ = 0;                           // time of the last correct()
   // Displacement, velocity and acceleration of prescribed function \p f at time \p t.
   std::array<double, 3> motion_at(int f, double t, double dt) const;

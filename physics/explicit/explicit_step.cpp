@@ -208,11 +208,11 @@ void ExplicitStep::run(StepContext& context) {
   }
   solver.initialise(start);
   // total_mass() is collective: every rank builds the text, the root prints it.
-  if (solver.mass_scaling().added_mass > 0.01 * solver.total_mass()) {
-    const std::string warning = mass_scaling_warning(solver);
-    if (comm.is_root())
-      std::fprintf(stderr, "railfe: warning: %s: %s\n", path.c_str(), warning.c_str());
-  }
+  const std::string mass_warning = solver.mass_scaling().added_mass > 0.01 * solver.total_mass()
+                                       ? mass_scaling_warning(solver)
+                                       : "";
+  if (!mass_warning.empty() && comm.is_root())
+    std::fprintf(stderr, "railfe: warning: %s: %s\n", path.c_str(), mass_warning.c_str());
   const double initial_stable_step = solver.stable_step();
   if (!(initial_stable_step > 0) || !std::isfinite(initial_stable_step))
     throw RunError(path + ": no stable step could be found (degenerate elements or no mass?)");
@@ -330,8 +330,8 @@ void ExplicitStep::run(StepContext& context) {
     summary.add(section, "mass scaling: elements made heavier",
                 static_cast<double>(solver.mass_scaling().scaled_elements));
     summary.add(section, "mass scaling: mass added", solver.mass_scaling().added_mass, "kg");
-    if (solver.mass_scaling().added_mass > 0.01 * solver.total_mass())
-      summary.add(section, "warning", mass_scaling_warning(solver));
+    if (!mass_warning.empty())
+      summary.add(section, "warning", mass_warning);
   }
   summary.add(
       section, "formulation",

@@ -17,21 +17,6 @@ constexpr double kDerivativeStep = 1e-6;
 
 }  // namespace
 
-std::vector<LocalIndex> owned_set_nodes(const MeshPartition& partition, const std::string& set) {
-  std::vector<LocalIndex> nodes;
-  if (set.empty()) {
-    for (LocalIndex node = 0; node < partition.n_owned_nodes(); ++node)
-      nodes.push_back(node);
-    return nodes;
-  }
-  for (GlobalIndex node : partition.mesh().node_set(set, "", "").nodes) {
-    const LocalIndex local = partition.local_node(node);
-    if (local >= 0 && local < partition.n_owned_nodes())
-      nodes.push_back(local);
-  }
-  return nodes;
-}
-
 bool depends_on_position(const std::string& text) {
   static const std::regex variable("(^|[^A-Za-z0-9_])[xyz]($|[^A-Za-z0-9_])");
   return std::regex_search(text, variable);

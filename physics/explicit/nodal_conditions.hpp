@@ -10,6 +10,7 @@
 
 #include "framework/base/types.hpp"
 #include "framework/deck/expression.hpp"
+#include "framework/mesh/partition.hpp"
 #include "physics/explicit/explicit_settings.hpp"
 
 namespace railfe {
@@ -73,9 +74,6 @@ class PrescribedMotions {
   mutable std::vector<double> values_at_[3];
   const double* coordinates_;
 };
-
-/// The owned local nodes of node set \p set of \p partition ("" = every owned node).
-std::vector<LocalIndex> owned_set_nodes(const MeshPartition& partition, const std::string& set);
 
 /// Whether the deck expression \p text uses x, y or z (else it is a function of t alone).
 bool depends_on_position(const std::string& text);

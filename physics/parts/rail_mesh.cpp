@@ -121,9 +121,7 @@ std::vector<double> rail_stations(const RailDimensions& d) {
     stations.push_back(start + (end - start) * k / n);
   for (double length : after)
     stations.push_back(stations.back() + length);
-  stations.back() = std::max(stations.back(), end);
-  if (!after.empty())
-    stations.back() = d.length;
+  stations.back() = d.length;  // the scaled lengths end there up to round-off
   return stations;
 }
 

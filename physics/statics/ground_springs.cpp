@@ -7,17 +7,12 @@ namespace railfe {
 
 namespace {
 
-// Owned local nodes of \p set, and the share of the set's total stiffness each one takes.
+// Owned nodes of \p set and the share of the set's stiffness each takes: one over the set's
+// nodes on all ranks (those attached to elements), as the explicit module's node-set springs.
 std::vector<LocalIndex> owned_nodes(const MeshPartition& partition, const std::string& set,
                                     double& share) {
-  std::vector<LocalIndex> nodes;
-  const auto& members = partition.mesh().node_set(set, "", "").nodes;
-  for (GlobalIndex node : members) {
-    const LocalIndex local = partition.local_node(node);
-    if (local >= 0 && local < partition.n_owned_nodes())
-      nodes.push_back(local);
-  }
-  share = 1.0 / static_cast<double>(members.size());
+  std::vector<LocalIndex> nodes = owned_set_nodes(partition, set);
+  share = 1.0 / static_cast<double>(partition.comm().sum(static_cast<long long>(nodes.size())));
   return nodes;
 }
 

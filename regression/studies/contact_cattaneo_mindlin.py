@@ -59,7 +59,7 @@ import matplotlib.ticker  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from railfe_runs import (csv_rows, run_deck, step_section, study_parser,  # noqa: E402
-                         typed_rows)
+                         typed_rows, write_rows)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DECK = os.path.join(ROOT, "inputs", "verification", "contact_cattaneo_mindlin", "deck.xml")
@@ -241,16 +241,6 @@ def measure(size_mm, factor, work, railfe, reuse=False):
     return rows
 
 
-def write_csv(rows):
-    os.makedirs(os.path.dirname(CSV), exist_ok=True)
-    columns = list(rows[0].keys())
-    with open(CSV, "w") as out:
-        out.write(",".join(columns) + "\n")
-        for row in rows:
-            out.write(",".join(repr(row[c]) if isinstance(row[c], float) else str(row[c])
-                               for c in columns) + "\n")
-
-
 def plot(rows, work):
     fig, axes = plt.subplots(2, 2, figsize=(12, 9))
     # (a) tractions of the case's mesh and penalty against the closed form
@@ -371,7 +361,7 @@ def main():
         futures = {run: pool.submit(measure, *run, args.work, args.railfe, args.reuse)
                    for run in order}
         rows = [row for run in RUNS for row in futures[run].result()]
-    write_csv(rows)
+    write_rows(CSV, rows)
     plot(rows, args.work)
     print(f"wrote {CSV} and {PNG}")
 

@@ -47,7 +47,7 @@ import matplotlib.ticker  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from railfe_runs import (csv_rows, run_deck, step_section, study_parser,  # noqa: E402
-                         typed_rows)
+                         typed_rows, write_rows)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DECK = os.path.join(ROOT, "inputs", "verification", "contact_hertz_cylinder", "deck.xml")
@@ -141,16 +141,6 @@ def measure(size_mm, factor, work, railfe):
     return row
 
 
-def write_csv(rows):
-    os.makedirs(os.path.dirname(CSV), exist_ok=True)
-    columns = list(rows[0].keys())
-    with open(CSV, "w") as out:
-        out.write(",".join(columns) + "\n")
-        for row in rows:
-            out.write(",".join(repr(row[c]) if isinstance(row[c], float) else str(row[c])
-                               for c in columns) + "\n")
-
-
 def plot(rows):
     fig, axes = plt.subplots(2, 2, figsize=(11, 8.5), sharey="row")
     colours = {f: f"C{k}" for k, f in enumerate(FACTORS)}
@@ -235,7 +225,7 @@ def main():
         futures = {case: pool.submit(measure, *case, args.work, args.railfe) for case in cases}
         rows = [futures[case].result() for case in cases]
     rows.sort(key=lambda row: (row["penalty_factor"], -row["element_size_mm"]))
-    write_csv(rows)
+    write_rows(CSV, rows)
     plot(rows)
     print(f"wrote {CSV} and {PNG}")
 

@@ -44,7 +44,7 @@ import matplotlib.ticker  # noqa: E402
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import carter_rolling  # noqa: E402
 from railfe_runs import (csv_rows, run_deck, step_section, study_parser,  # noqa: E402
-                         typed_rows)
+                         typed_rows, write_rows)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DECK = os.path.join(ROOT, "inputs", "verification", "contact_rolling_carter", "deck.xml")
@@ -188,16 +188,6 @@ def write_patch(row, work):
                       f"{hertz * 1e-6!r},{float(reference['shear'](s)) * 1e-6!r}\n")
 
 
-def write_csv(rows):
-    os.makedirs(os.path.dirname(CSV), exist_ok=True)
-    columns = list(rows[0].keys())
-    with open(CSV, "w") as out:
-        out.write(",".join(columns) + "\n")
-        for row in rows:
-            out.write(",".join(repr(row[c]) if isinstance(row[c], float) else str(row[c])
-                               for c in columns) + "\n")
-
-
 def plot(rows):
     fig, grid = plt.subplots(2, 2, figsize=(13, 10))
     axes = grid.ravel()
@@ -298,7 +288,7 @@ def main():
         futures = {case: pool.submit(measure, *case, omega_free[case[0]], args.work, args.railfe)
                    for case in reversed(cases)}
         rows = [futures[case].result() for case in cases]
-    write_csv(rows)
+    write_rows(CSV, rows)
     write_patch(next(r for r in rows if (r["element_size_mm"], r["penalty_factor"]) == PATCH_RUN
                      and r["hub_creepage_over_V/R"] == CASE_CREEPAGE), args.work)
     plot(rows)

@@ -169,3 +169,15 @@ def typed_rows(path, text_columns):
     """The rows of a study's CSV with every value a float except the `text_columns`."""
     return [{k: (v if k in text_columns else float(v)) for k, v in row.items()}
             for row in csv_rows(path)]
+
+
+def write_rows(path, rows):
+    """Writes dict rows to CSV at `path` (header from the first row; floats as repr, so that
+    every digit survives), creating its directory."""
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    columns = list(rows[0].keys())
+    with open(path, "w") as out:
+        out.write(",".join(columns) + "\n")
+        for row in rows:
+            out.write(",".join(repr(row[c]) if isinstance(row[c], float) else str(row[c])
+                               for c in columns) + "\n")
