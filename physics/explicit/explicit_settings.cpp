@@ -350,6 +350,11 @@ void read_discrete(const Teuchos::ParameterList& discrete, const std::string& de
         throw_input_error(deck, where + "/Motion " + axis,
                           "is given for a translation that Fixed translations holds at zero",
                           "either Motion " + axis + " or '" + axis + "' in Fixed translations");
+      if (!body.motion[d].empty() && body.velocity[d] != 0)
+        throw_input_error(deck, where + "/Velocity",
+                          "gives a velocity along " + axis + ", which Motion " + axis +
+                              " prescribes (its rate at t = 0 is the start velocity)",
+                          "0 along " + axis + ", or no Motion " + axis);
     }
     if (body.node_set.empty() && !body.reference)
       throw_input_error(deck, where, "has neither a Node set nor a Reference point",

@@ -51,7 +51,7 @@ ParameterSpec rail_parameters() {
             Range::closed(0.0002, 0.5));
   spec.real("Growth", 1.25,
             "Ratio of neighbouring element lengths along x between the zone and the coarse "
-            "parts.",
+            "parts (only with a Solution zone).",
             "", Range::open_closed(1, 2));
   spec.real("Head element size", 0.003,
             "Target size of the section's elements at the running surface (the crown and "
@@ -79,9 +79,12 @@ RailDimensions rail_dimensions(const Teuchos::ParameterList& list, const Deck& d
       refuse(deck.source, "Solution zone", "does not lie within the rail's length",
              "{start, end} with 0 <= start < end <= Length (" + metres(d.length) + ")");
     }
-  } else if (!list.getEntry("Zone element size").isDefault()) {
-    refuse(deck.source, "Zone element size", "is given without a Solution zone",
-           "a Solution zone with it, or neither");
+  } else {
+    for (const char* name : {"Zone element size", "Growth"}) {
+      if (!list.getEntry(name).isDefault())
+        refuse(deck.source, name, "is given without a Solution zone",
+               "a Solution zone with it, or neither");
+    }
   }
   if (d.head_element_size > d.section_element_size) {
     refuse(deck.source, "Head element size",
