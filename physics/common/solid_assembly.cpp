@@ -11,6 +11,7 @@
 #include "framework/base/error.hpp"
 #include "framework/deck/expression.hpp"
 #include "framework/mesh/hex8_topology.hpp"
+#include "physics/elements/hex8.hpp"
 #include "physics/elements/hex8_enhanced_strain.hpp"
 #include "physics/elements/hex8_one_point.hpp"
 
@@ -115,6 +116,48 @@ double side_set_area(const SideSet& set, const MeshPartition& partition) {
   return partition.comm().sum(area);
 }
 
+// Adds m ω² r⊥ at every local node of the load's set, m the node's lumped mass from each hex8
+// element around it (the overlap sum is completed by the caller).
+void add_centrifugal_load(const CentrifugalLoad& load, const MaterialTable& materials,
+                          const MeshPartition& partition, Teuchos::ArrayRCP<double>& f) {
+  const Mesh& mesh = partition.mesh();
+  std::vector<char> spinning(partition.n_local_nodes(), 0);
+  for (GlobalIndex node : mesh.node_set(load.node_set, "", "").nodes) {
+    const LocalIndex local = partition.local_node(node);
+    if (local >= 0)
+      spinning[local] = 1;
+  }
+  const auto& w = load.angular_velocity;
+  const double w2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+  const double axis[3] = {w[0] / std::sqrt(w2), w[1] / std::sqrt(w2), w[2] / std::sqrt(w2)};
+  double x[8][3];
+  std::vector<double> mass(24 * 24);
+  for (const auto& block : partition.blocks()) {
+    if (mesh.blocks[block.block].type != ElementType::hex8)
+      continue;
+    const double density = materials.of_block(block.block).density;
+    for (LocalIndex e = 0; e < block.n_elements(); ++e) {
+      const LocalIndex* nodes = block.connectivity.data() + block.offsets[e];
+      if (std::none_of(nodes, nodes + 8, [&](LocalIndex n) { return spinning[n] != 0; }))
+        continue;
+      element_coordinates(partition, block, e, x);
+      hex8_mass(x, density, true, mass.data());
+      for (int a = 0; a < 8; ++a) {
+        if (!spinning[nodes[a]])
+          continue;
+        double r[3], along = 0;
+        for (int d = 0; d < 3; ++d) {
+          r[d] = x[a][d] - load.axis_point[d];
+          along += r[d] * axis[d];
+        }
+        const double m = mass[(3 * a) * 25];
+        for (int d = 0; d < 3; ++d)
+          f[3 * nodes[a] + d] += m * w2 * (r[d] - along * axis[d]);
+      }
+    }
+  }
+}
+
 }  // namespace
 
 void assemble_solid_loads(const SolidConditions& conditions, const MaterialTable& materials,
@@ -144,6 +187,8 @@ void assemble_solid_loads(const SolidConditions& conditions, const MaterialTable
         }
       }
     }
+    for (const auto& load : conditions.centrifugal_loads)
+      add_centrifugal_load(load, materials, partition, f);
     for (const auto& load : conditions.surface_loads) {
       const SideSet& set = mesh.side_set(load.side_set, "", "");
       std::array<double, 3> traction{};

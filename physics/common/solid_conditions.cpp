@@ -32,6 +32,16 @@ void add_solid_condition_parameters(ParameterSpec& spec) {
   nodal.required_real_array("Total force", "Force vector summed over the nodes.", "N", 3);
   spec.named_sublists("Nodal forces", nodal, "Forces at nodes.");
 
+  ParameterSpec spin(
+      "The centrifugal load of nodes spinning about an axis: each carries m omega^2 r, its lumped "
+      "mass times omega squared times its distance from the axis. Give it the Angular velocity "
+      "and Axis point of the explicit step's Initial velocity that follows, so that a rolling "
+      "wheel starts in balance.");
+  spin.required_text("Node set", "The spinning nodes.");
+  spin.required_real_array("Angular velocity", "Angular velocity vector.", "rad/s", 3);
+  spin.real_array("Axis point", {0, 0, 0}, "A point on the axis.", "m", 3);
+  spec.named_sublists("Centrifugal loads", spin, "Centrifugal loads of spinning node sets.");
+
   spec.real_array("Gravity", {0, 0, 0},
                   "Gravitational acceleration; every solid carries density × gravity.", "m/s^2", 3,
                   Range::closed(-1e6, 1e6));
@@ -123,6 +133,13 @@ SolidConditions read_solid_conditions(const Teuchos::ParameterList& step, const 
         {name, list.template get<std::string>("Node set"),
          vector3(list.template get<Teuchos::Array<double>>("Total force"))});
   });
+  for_each_sublist(step.sublist("Centrifugal loads"),
+                   [&](const std::string& name, const auto& list) {
+                     conditions.centrifugal_loads.push_back(
+                         {name, list.template get<std::string>("Node set"),
+                          vector3(list.template get<Teuchos::Array<double>>("Angular velocity")),
+                          vector3(list.template get<Teuchos::Array<double>>("Axis point"))});
+                   });
   conditions.gravity = vector3(step.get<Teuchos::Array<double>>("Gravity"));
   for_each_sublist(step.sublist("Ties"), [&](const std::string& name, const auto& list) {
     conditions.ties.push_back({name, list.template get<std::string>("Master node set"),
@@ -146,6 +163,13 @@ void check_solid_conditions(const SolidConditions& conditions, const Mesh& mesh,
   }
   for (const auto& force : conditions.nodal_forces) {
     mesh.node_set(force.node_set, deck, path + "/Nodal forces/" + force.name + "/Node set");
+  }
+  for (const auto& load : conditions.centrifugal_loads) {
+    mesh.node_set(load.node_set, deck, path + "/Centrifugal loads/" + load.name + "/Node set");
+    const auto& w = load.angular_velocity;
+    if (w[0] == 0 && w[1] == 0 && w[2] == 0)
+      throw_input_error(deck, path + "/Centrifugal loads/" + load.name + "/Angular velocity",
+                        "is zero (no load)", "a non-zero angular velocity");
   }
   for (const auto& tie : conditions.ties) {
     mesh.node_set(tie.master_set, deck, path + "/Ties/" + tie.name + "/Master node set");

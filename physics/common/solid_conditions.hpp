@@ -42,6 +42,16 @@ struct NodalForce {
   std::array<double, 3> total_force{};  ///< N, summed over the nodes
 };
 
+/// The centrifugal load of a node set spinning about an axis, so that a static step can start an
+/// explicit run of a rolling wheel in balance: every node carries m ω² r⊥, with m its lumped
+/// (row-sum) mass, as the explicit step lumps it, and r⊥ its distance vector from the axis.
+struct CentrifugalLoad {
+  std::string name;                          ///< its name in the deck
+  std::string node_set;                      ///< the spinning nodes
+  std::array<double, 3> angular_velocity{};  ///< rad/s
+  std::array<double, 3> axis_point{};        ///< a point on the axis (m)
+};
+
 /// Two node sets whose coincident nodes move together (multi-point constraints).
 struct Tie {
   std::string name;        ///< its name in the deck
@@ -61,12 +71,14 @@ struct SolidConditions {
   std::vector<DisplacementCondition> displacements;  ///< Dirichlet conditions
   std::vector<SurfaceLoad> surface_loads;            ///< tractions and pressures
   std::vector<NodalForce> nodal_forces;              ///< point-like forces
+  std::vector<CentrifugalLoad> centrifugal_loads;    ///< spinning node sets
   std::array<double, 3> gravity{};                   ///< m/s², body force ρ g on every solid
   std::vector<Tie> ties;                             ///< tied node sets
   std::vector<Probe> probes;                         ///< reported displacements
 };
 
-/// Adds Displacements, Surface loads, Nodal forces, Gravity, Ties and Probes to \p spec.
+/// Adds Displacements, Surface loads, Nodal forces, Centrifugal loads, Gravity, Ties and Probes to
+/// \p spec.
 void add_solid_condition_parameters(ParameterSpec& spec);
 
 /// Component indices (0 = x, 1 = y, 2 = z) of a deck string of letters such as "xz". Throws

@@ -33,6 +33,7 @@ DiscreteParts::DiscreteParts(const ExplicitSettings& settings, const MeshPartiti
     body.name = spec.name;
     body.extra_mass = spec.mass;
     body.fixed = spec.fixed;
+    body.weighs = spec.weighs;
     if (!spec.node_set.empty())
       body.nodes = owned_set_nodes(partition, spec.node_set);
     // Mass and centroid of the carried nodes, summed over ranks.
@@ -317,7 +318,8 @@ void DiscreteParts::correct(double time, double dt, const std::array<double, 3>&
     body.force = Eigen::Vector3d(sums[6 * b], sums[6 * b + 1], sums[6 * b + 2]);
     body.moment = Eigen::Vector3d(sums[6 * b + 3], sums[6 * b + 4], sums[6 * b + 5]);
     // Loads on the body itself: gravity on its extra mass and applied moments.
-    Eigen::Vector3d own_force = body.extra_mass * vector_of(gravity);
+    Eigen::Vector3d own_force = body.weighs ? Eigen::Vector3d(body.extra_mass * vector_of(gravity))
+                                            : Eigen::Vector3d::Zero();
     Eigen::Vector3d own_moment = Eigen::Vector3d::Zero();
     for (std::size_t m = 0; m < moments_.size(); ++m)
       if (moments_[m].body == body.name)

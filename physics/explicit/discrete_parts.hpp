@@ -46,6 +46,7 @@ struct RigidBody {
   double extra_mass = 0;                                   ///< mass at the reference point (kg)
   Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();       ///< reference inertia about the point
   bool rotates = true;                                     ///< false for a point mass
+  bool weighs = true;                                      ///< gravity acts on its extra mass
   std::array<bool, 6> fixed{};                             ///< locked translations and rotations
   Eigen::Vector3d displacement = Eigen::Vector3d::Zero();  ///< U (m)
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();      ///< V (m/s)

@@ -71,7 +71,7 @@ void DiscreteParts::start_from_preload(const NodalArrays& nodes,
       }
     }
     for (std::size_t b = 0; b < n; ++b) {
-      if (free(static_cast<int>(b)))
+      if (free(static_cast<int>(b)) && bodies_[b].weighs)
         F(b) += bodies_[b].mass * gravity[d];
     }
     // A free body without a spring in this direction stays where it is (it would drift).

@@ -40,6 +40,11 @@ ParameterSpec discrete_parameters() {
   body.real_array("Angular velocity", {0, 0, 0}, "Initial angular velocity.", "rad/s", 3);
   body.text("Fixed translations", "", "Translations held at zero: letters of 'xyz'.");
   body.text("Fixed rotations", "", "Rotations held at zero: letters of 'xyz'.");
+  body.flag("Weight", true,
+            "Gravity acts on the body's Mass. false leaves its weight out: exact for a point "
+            "mass on linear springs to the ground (a sleeper on ballast), whose weight only "
+            "shifts their rest length, so a statics preload without it starts in balance. "
+            "Only for a body without a Node set, in a step with Gravity.");
   for (const char* axis : {"x", "y", "z"}) {
     body.text(std::string("Motion ") + axis, "",
               std::string("Prescribed displacement of the reference point along ") + axis +
@@ -337,6 +342,14 @@ void read_discrete(const Teuchos::ParameterList& discrete, const std::string& de
     body.inertia = array3(entry, "Inertia");
     body.velocity = array3(entry, "Velocity");
     body.angular_velocity = array3(entry, "Angular velocity");
+    body.weighs = entry.template get<bool>("Weight");
+    const bool no_gravity = settings.gravity == std::array<double, 3>{0, 0, 0};
+    if (!body.weighs && (!body.node_set.empty() || no_gravity))
+      throw_input_error(deck, where + "/Weight",
+                        no_gravity ? "is false in a step without Gravity (nothing to leave out)"
+                                   : "is false for a body that carries nodes (their weight is "
+                                     "the nodes' own)",
+                        "true, or leave it out");
     const auto translations = fixed_letters(entry.template get<std::string>("Fixed translations"),
                                             deck, where + "/Fixed translations");
     const auto rotations = fixed_letters(entry.template get<std::string>("Fixed rotations"), deck,

@@ -68,6 +68,7 @@ struct RigidBodySpec {
   std::array<double, 3> velocity{};          ///< initial velocity (m/s)
   std::array<double, 3> angular_velocity{};  ///< initial angular velocity (rad/s)
   std::array<bool, 6> fixed{};               ///< locked translations x y z, rotations x y z
+  bool weighs = true;                        ///< gravity acts on its Mass
   /// Prescribed displacement of the reference point along x, y, z: a function of t (m) from
   /// its position at the start, or "" (free).
   std::array<std::string, 3> motion{};

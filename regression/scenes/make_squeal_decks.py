@@ -1,0 +1,375 @@
+#!/usr/bin/env python3
+"""Writes the squeal rolling scene's decks (issue 16): inputs/scenes/squeal_case1..5.xml at full
+scale, inputs/scenes/squeal_demo.xml (case 3, coarse, about a minute) and, for the studies, any
+variant (mesh size, track length, sleepers, end time) with --variant options.
+
+One model, every deck: an S1002 wheel (920 mm) with half its axle on a 54E1 rail inclined 1:40
+on rail pads, sleepers (point masses) and ballast; a statics preload under gravity and the sprung
+mass's weight, then explicit rolling at 100 km/h with a driving torque and, for cases 2-5, a
+prescribed lateral motion of the axle box. The decks are generated so that the wheel's refined
+arc, the rail's solution zone and the time line always agree; edit this script, not the decks.
+
+  make_squeal_decks.py                 # rewrite the shipped decks in inputs/scenes
+  make_squeal_decks.py --check         # exit 1 if a shipped deck differs from what it would write
+  make_squeal_decks.py --case 1 --zone-size 0.004 --output /tmp/case1_4mm.xml   # a study variant
+"""
+import argparse
+import math
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SCENES = os.path.join(HERE, "..", "..", "inputs", "scenes")
+
+SPEED = 100 / 3.6  # m/s
+ROLLING_RADIUS = 0.46038  # m, S1002 radius at the contact point on the inclined 54E1
+RAIL_OFFSET = -0.0025  # m, rail centre from the running circle (standard gauge)
+AXIS_HEIGHT = 0.459916265  # m, wheel part Translation z: 20 um into the rail (squeal_placement.py)
+INCLINATION = -math.degrees(math.atan(1 / 40))  # about +x: the head tilts towards +y (the flange)
+SPRUNG_MASS = 10836.0  # kg: car body and bogie share, the static wheel load 111.3 kN
+SPRUNG_WEIGHT = SPRUNG_MASS * 9.81
+TORQUE = 13800.0  # N m: traction coefficient about 0.27 at the 111 kN load (0.27 * Q * r)
+SLEEPER_SPACING = 0.6  # m
+SLEEPER_MASS = 150.0  # kg, half a concrete monoblock sleeper
+PAD = {"vertical": 1.3e9, "damping": 4.5e4, "shear": 5.0e7}  # N/m, N s/m, N/m
+BALLAST = {"vertical": 4.5e7, "damping": 3.2e4}  # N/m, N s/m per sleeper (per rail seat)
+PAD_LENGTH = 0.15  # m along the rail under each seat
+
+# Lateral motion of the axle box (cases 2-4 small, medium, large): the lateral speed reached,
+# as a rigid lateral creepage v_y / V (the creepage in the patch lags it: the wheel and rail bend).
+LATERAL_CREEPAGE = {1: 0.0, 2: 0.0005, 3: 0.002, 4: 0.0045, 5: 0.002}
+
+FULL = {
+    "title": "full scale",
+    "rail_length": 2.4, "start_x": 0.7, "zone": (0.39, 0.54),
+    "zone_size": 0.001, "rail_size": 0.02, "head_size": 0.001, "section_size": 0.01,
+    "wheel_size": 0.05, "tread_size": 0.002, "arc_size": 0.001,
+    "end_time": 0.019, "ramp": 0.006, "lateral_start": 0.016, "lateral_ramp": 5e-4,
+    "patch_times": [0.014 + 0.00025 * k for k in range(21)], "mass_scaling": 0.0,
+}
+DEMO = {
+    "title": "demo scale",
+    "rail_length": 1.2, "start_x": 0.45, "zone": (-0.005, 0.05),
+    "zone_size": 0.003, "rail_size": 0.04, "head_size": 0.003, "section_size": 0.02,
+    "wheel_size": 0.06, "tread_size": 0.003, "arc_size": 0.003,
+    "end_time": 0.0016, "ramp": 5e-4, "lateral_start": 6e-4, "lateral_ramp": 1e-4,
+    "patch_times": [0.0006, 0.001, 0.0013, 0.0016], "mass_scaling": 7.5e-8,
+}
+
+def friction(case):
+    if case == 5:
+        return ('<Parameter name="Friction" type="string" value="velocity dependent"/>\n'
+                '<Parameter name="Static coefficient" type="double" value="0.5"/>\n'
+                '<Parameter name="Dynamic coefficient" type="double" value="0.32"/>\n'
+                '<Parameter name="Decay" type="double" value="6"/>')
+    return ('<Parameter name="Friction" type="string" value="coulomb"/>\n'
+            '<Parameter name="Friction coefficient" type="double" value="0.45"/>')
+
+
+def lateral_motion(case, p):
+    """Motion y of the axle box: at rest until lateral_start, the speed ramped up linearly over
+    lateral_ramp (no jump in velocity, so no impulse), then constant."""
+    v = LATERAL_CREEPAGE[case] * SPEED
+    if v == 0:
+        return None
+    t1, tr = p["lateral_start"], p["lateral_ramp"]
+    return (f"t &lt; {t1:g} ? 0 : (t &lt; {t1 + tr:g} ? {v / (2 * tr):.6g}*(t - {t1:g})^2 : "
+            f"{v:.6g}*(t - {t1 + tr / 2:g}))")
+
+
+def track_springs(seats, sleepers, bodies):
+    """The explicit step's rail supports. "springs": each seat's nodes on pad and ballast in
+    series to the ground, as the statics preload has them (the sleepers' mass left out), so the
+    run starts in balance. "bodies": a sleeper point mass under each seat, the pad between them
+    and the ballast below; the preload, which has no sleeper unknowns, then differs from it in
+    how the pad resists the seat's rotation, and the run starts with a transient (appends the
+    sleepers to \p bodies)."""
+    springs = []
+    series = PAD["vertical"] * BALLAST["vertical"] / (PAD["vertical"] + BALLAST["vertical"])
+    # Two Kelvin elements in series, at frequencies well below kp / cp: each damper weighted by
+    # the square of the other spring's share of the compliance.
+    share = BALLAST["vertical"] / (PAD["vertical"] + BALLAST["vertical"])
+    damping = PAD["damping"] * share**2 + BALLAST["damping"] * (1 - share)**2
+    for k, x in enumerate(seats):
+        seat = f"seat {k + 1}"
+        if sleepers == "springs":
+            springs.append(block(f"support {k + 1}", "\n".join([
+                p_("End A", "string", seat),
+                p_("Stiffness", "Array(double)", fmt([PAD["shear"], PAD["shear"], series])),
+                p_("Damping", "Array(double)", fmt([PAD["damping"], PAD["damping"], damping]))]),
+                0))
+            continue
+        name = f"sleeper {k + 1}"
+        bodies.append(block(name, "\n".join([
+            p_("Reference point", "Array(double)", fmt([x, RAIL_OFFSET, -0.25])),
+            p_("Mass", "double", f"{SLEEPER_MASS:g}"), p_("Fixed translations", "string", "xy"),
+            p_("Weight", "bool", "false")]), 0))
+        springs.append(block(f"pad {k + 1}", "\n".join([
+            p_("End A", "string", seat), p_("End B", "string", name),
+            p_("Stiffness", "Array(double)", fmt([PAD["shear"], PAD["shear"], PAD["vertical"]])),
+            p_("Damping", "Array(double)", fmt([PAD["damping"]] * 3))]), 0))
+        springs.append(block(f"ballast {k + 1}", "\n".join([
+            p_("End A", "string", name),
+            p_("Stiffness", "Array(double)", fmt([0, 0, BALLAST["vertical"]])),
+            p_("Damping", "Array(double)", fmt([0, 0, BALLAST["damping"]]))]), 0))
+    return springs
+
+
+def tread_box(arc):
+    """A box (wheel part coordinates) around the tread faces of the refined arc: only they can
+    touch the rail in the run, so only they are searched for contact."""
+    lo, hi = (math.radians(a) for a in arc)
+    r_in, r_out, margin = 0.40, 0.52, 0.01
+    return [r_in * math.cos(lo) - margin, r_out * math.cos(hi) + margin, -1, 1,
+            r_out * math.sin(lo) - margin, r_in * math.sin(hi) + margin]
+
+
+def fmt(values):
+    return "{" + ", ".join(f"{v:.9g}" for v in values) + "}"
+
+
+def sleeper_positions(length):
+    count = int(math.floor(length / SLEEPER_SPACING + 1e-9))
+    first = (length - (count - 1) * SLEEPER_SPACING) / 2
+    return [first + k * SLEEPER_SPACING for k in range(count)]
+
+
+def p_(name, kind, value):
+    return f'<Parameter name="{name}" type="{kind}" value="{value}"/>'
+
+
+def block(name, body, indent):
+    pad = " " * indent
+    inner = "\n".join(pad + "  " + line for line in body.split("\n"))
+    return f'{pad}<ParameterList name="{name}">\n{inner}\n{pad}</ParameterList>'
+
+
+def deck(case, p, sleepers=True):
+    x0 = p["start_x"]
+    zone = (x0 + p["zone"][0], x0 + p["zone"][1])
+    omega = SPEED / ROLLING_RADIUS
+    # Material points of the tread that touch the rail inside the zone started this far (degrees)
+    # ahead of the lowest point (270), plus a patch length on either side.
+    margin = math.degrees(0.012 / ROLLING_RADIUS)
+    arc = (270 + math.degrees(p["zone"][0] / ROLLING_RADIUS) - margin,
+           270 + math.degrees(p["zone"][1] / ROLLING_RADIUS) + margin)
+    seats = sleeper_positions(p["rail_length"])
+    series = PAD["vertical"] * BALLAST["vertical"] / (PAD["vertical"] + BALLAST["vertical"])
+    motion = lateral_motion(case, p)
+    L = []
+    L.append("<ParameterList name=\"railfe\">")
+    L.append("  " + p_("Title", "string", f"Squeal rolling scene, case {case} ({p['title']})"))
+    node_sets = []
+    for k, x in enumerate(seats):
+        node_sets.append(block(f"seat {k + 1}", p_("Box", "Array(double)", fmt(
+            [x - PAD_LENGTH / 2, x + PAD_LENGTH / 2, -1, 1, -1, 1])) + "\n" +
+            p_("Within", "string", "rail.foot_bottom"), 0))
+    rail = "\n".join([
+        p_("Type", "string", "rail"),
+        block("Rail", "\n".join([
+            p_("Profile", "string", "54E1"), p_("Length", "double", p["rail_length"]),
+            p_("Solution zone", "Array(double)", fmt(zone)),
+            p_("Zone element size", "double", p["zone_size"]),
+            p_("Element size", "double", p["rail_size"]),
+            p_("Head element size", "double", p["head_size"]),
+            p_("Section element size", "double", p["section_size"])]), 0),
+        p_("Rotation axis", "Array(double)", "{1, 0, 0}"),
+        p_("Rotation angle", "double", f"{INCLINATION:.16g}"),
+        p_("Translation", "Array(double)", fmt([0, RAIL_OFFSET, 0]))])
+    rim = (ROLLING_RADIUS - 0.03, -0.06, 0.0)  # field-side rim face, ahead of the axle
+    wheel = "\n".join([
+        p_("Type", "string", "wheel"),
+        block("Wheel", "\n".join([
+            p_("Half axle", "bool", "true"), p_("Element size", "double", p["wheel_size"]),
+            p_("Tread element size", "double", p["tread_size"]),
+            p_("Refined arc", "Array(double)", fmt(arc)),
+            p_("Arc element size", "double", p["arc_size"])]), 0),
+        block("Node sets", "\n".join([
+            block("all", p_("Box", "Array(double)", "{-1, 1, -1, 1, -1, 1}"), 0),
+            block("rim point", p_("Point", "Array(double)", fmt(rim)), 0)]), 0),
+        block("Side sets", block("rolling tread", p_("Box", "Array(double)", fmt(
+            tread_box(arc))) + "\n" + p_("Within", "string", "tread"), 0), 0),
+        p_("Translation", "Array(double)", fmt([x0, 0, AXIS_HEIGHT]))])
+    mesh = "\n".join([
+        p_("Type", "string", "parts"),
+        block("Parts", block("rail", rail, 0) + "\n" + block("wheel", wheel, 0), 0),
+        block("Node sets", "\n".join(node_sets), 0)])
+    L.append(block("Mesh", mesh, 2))
+    L.append(block("Materials", block("steel", "\n".join([
+        p_("Young's modulus", "double", "210e9"), p_("Poisson's ratio", "double", "0.3"),
+        p_("Density", "double", "7850"),
+        p_("Blocks", "Array(string)", "{rail.rail, wheel.wheel, wheel.axle}")]), 0), 2))
+    contact_common = "\n".join([
+        p_("Slave side set", "string", "wheel.rolling tread"),
+        p_("Master side set", "string", "rail.running_surface"),
+        p_("Penalty factor", "double", "1")])
+    ends = lambda extra: "\n".join(
+        block(n, p_("Node set", "string", s) + extra, 0)
+        for n, s in (("rail start", "rail.start_face"), ("rail end", "rail.end_face")))
+    held_xy = "\n" + p_("Components", "string", "xy")
+    # Statics: the pad and the ballast in series to the ground (a sleeper's weight only presses
+    # the ballast; the explicit step leaves it out), shear stiffness of the pad alone.
+    static_springs = "\n".join(
+        block(f"seat {k + 1}", p_("Node set", "string", f"seat {k + 1}") + "\n" + p_(
+            "Stiffness", "Array(double)", fmt([PAD["shear"], PAD["shear"], series])), 0)
+        for k in range(len(seats)))
+    preload = "\n".join([
+        p_("Module", "string", "statics"), p_("Gravity", "Array(double)", "{0, 0, -9.81}"),
+        p_("Contact tolerance", "double", "5e-4"),
+        block("Solid", p_("Integration", "string", "one point"), 0),
+        block("Linear solver", p_("Method", "string", "cholmod"), 0),
+        block("Displacements", ends(held_xy) + "\n" + block("axle box", p_(
+            "Node set", "string", "wheel.axle_end") + "\n" + p_("Components", "string", "xy"), 0),
+            0),
+        block("Nodal forces", block("sprung mass", p_("Node set", "string", "wheel.axle_end") +
+                                    "\n" + p_("Total force", "Array(double)",
+                                              fmt([0, 0, -SPRUNG_WEIGHT])), 0), 0),
+        block("Centrifugal loads", block("rolling wheel", "\n".join([
+            p_("Node set", "string", "wheel.all"),
+            p_("Angular velocity", "Array(double)", fmt([0, omega, 0])),
+            p_("Axis point", "Array(double)", fmt([x0, 0, AXIS_HEIGHT]))]), 0), 0),
+        block("Springs", static_springs, 0),
+        block("Contact pairs", block("wheel-rail", contact_common, 0), 0)])
+    axle_box = [p_("Node set", "string", "wheel.axle_end"),
+                p_("Velocity", "Array(double)", fmt([SPEED, 0, 0])),
+                p_("Angular velocity", "Array(double)", fmt([0, omega, 0])),
+                p_("Fixed rotations", "string", "xz")]
+    axle_box.append(p_("Motion y", "string", motion) if motion else
+                    p_("Fixed translations", "string", "y"))
+    bodies = [block("axle box", "\n".join(axle_box), 0),
+              block("sprung mass", "\n".join([
+                  p_("Reference point", "Array(double)", fmt([x0, 0.75, 1.2])),
+                  p_("Mass", "double", f"{SPRUNG_MASS:g}"),
+                  p_("Velocity", "Array(double)", fmt([SPEED, 0, 0])),
+                  p_("Fixed translations", "string", "y")]), 0)]
+    springs = [block("primary suspension", "\n".join([
+        p_("End A", "string", "axle box"), p_("End B", "string", "sprung mass"),
+        p_("Stiffness", "Array(double)", "{1e7, 0, 1.15e6}"),
+        p_("Damping", "Array(double)", "{1e4, 0, 2.5e3}")]), 0)]
+    springs += track_springs(seats, p.get("sleepers", "springs"), bodies)
+    histories = [block(n, p_("Node set", "string", "wheel.rim point") + "\n" +
+                       p_("Quantity", "string", "velocity") + "\n" + p_("Component", "string", c), 0)
+                 for n, c in (("rim vx", "x"), ("rim vy", "y"), ("rim vz", "z"))]
+    histories += [block(n, p_("Body", "string", b) + "\n" + p_("Component", "string", c) +
+                        ("\n" + p_("Quantity", "string", q) if q else ""), 0)
+                  for n, b, c, q in (("axle y", "axle box", "y", None),
+                                     ("axle z", "axle box", "z", None),
+                                     ("axle spin", "axle box", "y", "angular velocity"),
+                                     ("sprung z", "sprung mass", "z", None))]
+    roll = [p_("Module", "string", "explicit"), p_("Start from", "string", "preload"),
+            p_("End time", "double", f"{p['end_time']:g}"),
+            p_("Gravity", "Array(double)", "{0, 0, -9.81}")]
+    if p["mass_scaling"]:
+        roll.append(p_("Mass scaling step", "double", f"{p['mass_scaling']:g}"))
+    roll += [
+        block("Initial velocity", block("wheel", "\n".join([
+            p_("Node set", "string", "wheel.all"),
+            p_("Translation", "Array(double)", fmt([SPEED, 0, 0])),
+            p_("Angular velocity", "Array(double)", fmt([0, omega, 0])),
+            p_("Axis point", "Array(double)", fmt([x0, 0, AXIS_HEIGHT]))]), 0), 0),
+        block("Prescribed motion", ends(held_xy), 0),
+        block("Discrete parts", "\n".join([
+            block("Rigid bodies", "\n".join(bodies), 0),
+            block("Springs", "\n".join(springs), 0),
+            block("Moments", block("driving torque", "\n".join([
+                p_("Body", "string", "axle box"),
+                p_("Moment", "Array(double)", fmt([0, TORQUE, 0])),
+                p_("Function", "string", f"min(t / {p['ramp']:g}, 1)")]), 0), 0)]), 0),
+        block("Contact pairs", block("wheel-rail", "\n".join([
+            contact_common, p_("Damping fraction", "double", "0.1"), friction(case),
+            p_("Patch times", "Array(double)", fmt(p["patch_times"]))]), 0), 0),
+        block("Output", "\n".join([
+            p_("Energy interval", "int", "100"), p_("History interval", "int", "10"),
+            block("Histories", "\n".join(histories), 0)]), 0)]
+    L.append(block("Steps", block("preload", preload, 0) + "\n" +
+                   block("roll", "\n".join(roll), 0), 2))
+    L.append("</ParameterList>")
+    return header(case, p, seats, zone, arc, motion) + "\n".join(L) + "\n"
+
+
+def header(case, p, seats, zone, arc, motion):
+    what = {1: "no lateral motion", 2: "small lateral motion", 3: "medium lateral motion",
+            4: "large lateral motion", 5: "medium lateral motion with falling friction"}[case]
+    law = ("velocity-dependent friction mu = 0.32 + 0.18 exp(-6 s/m |v_slip|)" if case == 5
+           else "Coulomb friction mu 0.45")
+    lateral = (f"from {p['lateral_start'] * 1e3:g} ms the axle box moves sideways (towards the "
+               f"flange, +y), its speed ramped over {p['lateral_ramp'] * 1e3:g} ms to "
+               f"{LATERAL_CREEPAGE[case] * SPEED * 1e3:.4g} mm/s (rigid lateral creepage "
+               f"{LATERAL_CREEPAGE[case] * 100:g} %)" if motion else
+               "the axle box held sideways")
+    name = "squeal_demo" if p is DEMO else f"squeal_case{case}"
+    return f"""<!--
+  Squeal rolling scene (Yang & Li 2019), case {case}: {what}, {law}. {p['title'].capitalize()}.
+  Written by regression/scenes/make_squeal_decks.py: change the script, not this file.
+
+  Model: an S1002 wheel (920 mm) with half its axle rolls at 100 km/h on a {p['rail_length']:g} m 54E1
+  rail from its EN 13674-1 drawing, inclined 1:40, its centre 2.5 mm outboard of the running
+  circle. Rail: {p['zone_size'] * 1e3:g} mm elements over the solution zone x = {zone[0]:.3f}-{zone[1]:.3f} m, graded to
+  {p['rail_size'] * 1e3:g} mm; wheel: {p['arc_size'] * 1e3:g} mm over the arc {arc[0]:.1f}-{arc[1]:.1f} deg that rolls through the zone,
+  {p['tread_size'] * 1e3:g} mm at the tread, {p['wheel_size'] * 1e3:g} mm elsewhere. Track: rail seats at {SLEEPER_SPACING:g} m
+  ({len(seats)}), each on a pad ({PAD['vertical'] / 1e6:g} MN/m, {PAD['damping'] / 1e3:g} kN s/m; shear {PAD['shear'] / 1e6:g} MN/m) and ballast ({BALLAST['vertical'] / 1e6:g} MN/m,
+  {BALLAST['damping'] / 1e3:g} kN s/m) in series to the ground ({sleeper_text(p)});
+  rail ends held sideways and along. Car body and bogie: {SPRUNG_MASS:g} kg on the primary
+  suspension (1.15 MN/m, 2.5 kN s/m) over the axle box, a rigid body carrying the axle's end.
+  Step "preload": statics under gravity, the sprung weight and the wheel's centrifugal load at
+  the rolling speed (pad and ballast in series), the wheel pressed into the rail
+  (frictionless): wheel load 111 kN. Only the tread faces of the refined arc are searched.
+  Step "roll": explicit from the preload, wheel at 100 km/h and omega = V / {ROLLING_RADIUS} m;
+  driving torque {TORQUE / 1e3:g} kN m ramped over {p['ramp'] * 1e3:g} ms (traction coefficient about 0.27);
+  {lateral}; {law}; {p['end_time'] * 1e3:g} ms.
+  Run:      railfe inputs/scenes/{name}.xml      (mpirun -np 2 ... for two ranks)
+  Look at:  roll_contact_wheel-rail.csv (forces), roll_contact_wheel-rail_patch_*.png (patches),
+            roll_histories.csv (rim velocity, axle box), roll.exo (ParaView).
+  Charts:   python3 regression/charts/contact_force_history.py DIR/roll_contact_wheel-rail.csv
+-->
+"""
+
+
+def sleeper_text(p):
+    if p.get("sleepers", "springs") == "springs":
+        return "sleeper mass left out: the run starts in balance"
+    return f"sleepers as {SLEEPER_MASS:g} kg point masses held sideways and along"
+
+
+def shipped():
+    decks = {f"squeal_case{c}.xml": deck(c, FULL) for c in range(1, 6)}
+    decks["squeal_demo.xml"] = deck(3, DEMO)
+    return decks
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--check", action="store_true")
+    parser.add_argument("--case", type=int, choices=range(1, 6))
+    parser.add_argument("--scale", choices=("full", "demo"), default="full")
+    parser.add_argument("--output")
+    parser.add_argument("--sleepers", choices=("springs", "bodies"))
+    for key in ("zone_size", "head_size", "tread_size", "arc_size", "rail_length", "end_time",
+                "mass_scaling", "start_x"):
+        parser.add_argument("--" + key.replace("_", "-"), type=float)
+    args = parser.parse_args()
+    if args.case:
+        p = dict(FULL if args.scale == "full" else DEMO)
+        for key in list(p) + ["sleepers"]:
+            value = getattr(args, key, None)
+            if value is not None:
+                p[key] = value
+        text = deck(args.case, p)
+        open(args.output, "w").write(text) if args.output else sys.stdout.write(text)
+        return 0
+    stale = []
+    for name, text in shipped().items():
+        path = os.path.join(SCENES, name)
+        if args.check:
+            if not os.path.exists(path) or open(path).read() != text:
+                stale.append(name)
+        else:
+            open(path, "w").write(text)
+    if stale:
+        print("out of date (run regression/scenes/make_squeal_decks.py): " + ", ".join(stale))
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
