@@ -129,6 +129,7 @@ void NewtonStepSolver::solve_for_acceleration(const StepState& state, double* a)
         ++statistics_.steps;
         statistics_.iterations += iteration;
         statistics_.last_iterations = iteration;
+        statistics_.most_iterations = std::max(statistics_.most_iterations, iteration);
         return;
       }
       if (iteration == settings_.max_iterations)
@@ -157,6 +158,7 @@ void NewtonStepSolver::solve_for_acceleration(const StepState& state, double* a)
       ++statistics_.steps;
       ++statistics_.iterations;
       statistics_.last_iterations = 1;
+      statistics_.most_iterations = std::max(statistics_.most_iterations, 1);
       return;
     }
   }

@@ -56,6 +56,7 @@ struct NewtonStatistics {
   std::size_t factorizations = 0;      ///< factor() calls
   std::size_t force_evaluations = 0;   ///< internal_force() calls
   int last_iterations = 0;             ///< corrections in the last converged step
+  int most_iterations = 0;             ///< most corrections in one converged step
   std::vector<double> last_residuals;  ///< ‖R‖ at each iterate of the last attempt
 };
 
