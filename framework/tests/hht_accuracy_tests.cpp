@@ -90,7 +90,8 @@ TEST(HhtNewton, PeriodElongationAndDampingAgainstHilberHughesTaylor) {
       EXPECT_NEAR(run.period_ratio, exact.period_ratio, 1e-10);
       EXPECT_NEAR(run.damping, exact.damping, 1e-9 + 1e-6 * exact.damping);
       EXPECT_NEAR(run.period_ratio - 1, elongation, 0.16 * omega_dt * omega_dt * elongation);
-      if (alpha == 0) {
+      if (alpha == 0) {  // the trapezoidal rule's exact discrete frequency 2 atan(Ω/2)
+        EXPECT_NEAR(run.period_ratio, omega_dt / (2 * std::atan(omega_dt / 2)), 1e-10);
         EXPECT_NEAR(run.damping, 0.0, 1e-12);
       } else {
         EXPECT_NEAR(run.damping, damping, 0.6 * omega_dt * omega_dt * damping);
