@@ -16,7 +16,7 @@
 #include "contact/geometry/contact_table.hpp"
 #include "contact/geometry/profile_file.hpp"
 
-#include "contact/tools/study_main.hpp"
+#include "framework/tools/study_main.hpp"
 
 namespace railfe {
 namespace {

@@ -25,7 +25,7 @@
 #include "contact/laws/saturation.hpp"
 #include "contact/laws/tangential_problem.hpp"
 
-#include "contact/tools/study_main.hpp"
+#include "framework/tools/study_main.hpp"
 
 namespace railfe {
 namespace {

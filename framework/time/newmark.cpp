@@ -22,6 +22,14 @@ NewmarkScheme NewmarkScheme::hht(double alpha) {
   return {(1 - alpha) * (1 - alpha) / 4, (1 - 2 * alpha) / 2, alpha};
 }
 
+NewmarkScheme NewmarkScheme::newmark(double beta, double gamma) {
+  if (!(beta >= 0.0 && gamma >= 0.5)) {
+    throw std::invalid_argument("Newmark needs beta >= 0 and gamma >= 1/2, got beta " +
+                                std::to_string(beta) + ", gamma " + std::to_string(gamma));
+  }
+  return {beta, gamma, 0.0};
+}
+
 double NewmarkScheme::spectral_radius_at_infinity() const {
   return (1 + alpha) / (1 - alpha);
 }
@@ -53,6 +61,7 @@ void NewmarkIntegrator::step(double time, double dt, SecondOrderProblem& problem
   state.n = n;
   state.u_old = u_old_.data();
   state.v_old = v_old_.data();
+  state.a_old = a;
   state.u_predicted = u_predicted_.data();
   state.v_predicted = v_predicted_.data();
   problem.solve_for_acceleration(state, a_new_.data());

@@ -30,6 +30,9 @@ struct NewmarkScheme {
   static NewmarkScheme average_acceleration();
   /// HHT-α with α in [−1/3, 0]; throws std::invalid_argument outside that range.
   static NewmarkScheme hht(double alpha);
+  /// Plain Newmark with β and γ given (α = 0); throws std::invalid_argument unless β ≥ 0 and
+  /// γ ≥ ½ (γ < ½ amplifies every mode).
+  static NewmarkScheme newmark(double beta, double gamma);
 
   /// Whether a step needs no solve with the stiffness (β = 0).
   bool is_explicit() const { return beta == 0.0; }
@@ -49,6 +52,7 @@ struct StepState {
   std::size_t n = 0;                      ///< number of unknowns (owned DOFs)
   const double* u_old = nullptr;          ///< u_n
   const double* v_old = nullptr;          ///< v_n
+  const double* a_old = nullptr;          ///< a_n
   const double* u_predicted = nullptr;    ///< ũ = u_n + Δt v_n + Δt² (½ − β) a_n
   const double* v_predicted = nullptr;    ///< ṽ = v_n + Δt (1 − γ) a_n
 };

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// The command line of the contact study tools: `TOOL MODE OUT.csv`, one function per mode; and
-/// their clock.
+/// The command line of the study tools (contact/tools, framework/tools): `TOOL MODE OUT.csv`, one
+/// function per mode; and their clock.
 
 #include <chrono>
 #include <exception>

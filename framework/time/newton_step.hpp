@@ -1,0 +1,101 @@
+#pragma once
+/// \file
+/// One implicit step of the Newmark/HHT-α family (newmark.hpp) by full Newton iteration on the
+/// acceleration a_{n+1}, with the consistent tangent
+///   ∂R/∂a = M + (1+α)(γ Δt (C_t + C_R) + β Δt² K_t),
+/// where R(a) = M a + (1+α)(f_int(u, v) + C_R v) − α (f_int(u_n, v_n) + C_R v_n)
+///              − (1+α) f_ext(t_{n+1}) + α f_ext(t_n),  u = ũ + β Δt² a,  v = ṽ + γ Δt a,
+/// and C_R = a_R M + b_R K_R (Rayleigh). See docs/theory.md, "HHT-α with Newton iterations".
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "framework/base/error.hpp"
+#include "framework/time/newmark.hpp"
+#include "framework/time/second_order_system.hpp"
+
+namespace railfe {
+
+/// Rayleigh damping C_R = mass·M + stiffness·K_R.
+struct RayleighDamping {
+  double mass = 0;       ///< a_R (1/s)
+  double stiffness = 0;  ///< b_R (s)
+};
+
+/// When a Newton iteration has converged: both tests hold at once, each with a relative
+/// tolerance and an absolute floor (in the system's units; N and m in railfe).
+struct NewtonSettings {
+  /// ‖R‖ ≤ max(residual_relative · ‖force scale‖, residual_absolute), where the force scale is
+  /// the largest of ‖M a‖, ‖(1+α)(f_int + C_R v)‖ and ‖the time-n and external terms‖.
+  double residual_relative = 1e-8;
+  double residual_absolute = 1e-10;  ///< absolute floor of the residual test
+  /// ‖β Δt² δa‖ ≤ max(increment_relative · ‖u_{n+1} − u_n‖, increment_absolute) for the last
+  /// correction δa (so at least one correction is always taken).
+  double increment_relative = 1e-8;
+  double increment_absolute = 1e-14;  ///< absolute floor of the increment test
+  int max_iterations = 20;            ///< corrections allowed per step
+};
+
+/// A step whose Newton iteration did not converge (or met a non-finite residual).
+class StepNotConverged : public RunError {
+ public:
+  /// The message, the start time t_n and step Δt of the attempt, and the residual norms.
+  StepNotConverged(const std::string& message, double time, double step,
+                   std::vector<double> residuals)
+      : RunError(message), time(time), step(step), residuals(std::move(residuals)) {}
+  double time;                    ///< t_n of the failed attempt (s)
+  double step;                    ///< Δt of the failed attempt (s)
+  std::vector<double> residuals;  ///< ‖R‖ at each iterate
+};
+
+/// Counters over the steps a solver has taken.
+struct NewtonStatistics {
+  std::size_t steps = 0;               ///< converged steps
+  std::size_t iterations = 0;          ///< Newton corrections over all converged steps
+  std::size_t factorizations = 0;      ///< factor() calls
+  std::size_t force_evaluations = 0;   ///< internal_force() calls
+  int last_iterations = 0;             ///< corrections in the last converged step
+  int most_iterations = 0;             ///< most corrections in one converged step
+  std::vector<double> last_residuals;  ///< ‖R‖ at each iterate of the last attempt
+};
+
+/// Solves the HHT-α balance for a_{n+1} by Newton's method on a SecondOrderSystem; plugs into
+/// NewmarkIntegrator as its SecondOrderProblem. For a linear system (is_linear()) it factors A
+/// once per step size and takes a single solve per step. Throws StepNotConverged when the
+/// iteration fails; the state passed in is then untouched (NewmarkIntegrator::step updates u, v,
+/// a only after a converged solve).
+class NewtonStepSolver : public SecondOrderProblem {
+ public:
+  /// A solver for \p system (not owned, must outlive the solver).
+  NewtonStepSolver(SecondOrderSystem& system, NewtonSettings settings = {},
+                   RayleighDamping rayleigh = {});
+
+  /// Finds a_{n+1}; see the file comment. The first guess is a_n.
+  void solve_for_acceleration(const StepState& state, double* acceleration) override;
+
+  /// Solves M a = f_ext(t) − f_int(u, v) − C_R v for the acceleration at \p time.
+  void initial_acceleration(double time, const double* u, const double* v, double* a);
+
+  /// The counters so far.
+  const NewtonStatistics& statistics() const { return statistics_; }
+  /// The system.
+  SecondOrderSystem& system() { return system_; }
+
+ private:
+  /// g = f_int(u, v) + C_R v, the force balanced against M a (work = Rayleigh product scratch).
+  void balance_force(const double* u, const double* v, double* g);
+  double norm(const std::vector<double>& x) const;
+
+  SecondOrderSystem& system_;
+  NewtonSettings settings_;
+  RayleighDamping rayleigh_;
+  NewtonStatistics statistics_;
+  bool linear_factor_valid_ = false;  ///< whether the linear path's factorization holds
+  MatrixCoefficients factored_;       ///< the coefficients it was factored with
+  // g(u_n, v_n) of the last converged iterate, reused when the next step starts from it.
+  std::vector<double> cached_u_, cached_v_, cached_force_;
+  std::vector<double> u_, v_, force_, fixed_, residual_, correction_, mass_a_, scratch_;
+};
+
+}  // namespace railfe

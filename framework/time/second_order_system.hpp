@@ -1,0 +1,57 @@
+#pragma once
+/// \file
+/// What an implicit module hands the HHT-α Newton solver (framework/time/newton_step.hpp): the
+/// semi-discrete system M a + f_int(u, v) = f_ext(t), with its consistent tangent and a linear
+/// solve. Arrays are the rank's owned unknowns (length n_unknowns()); a distributed system
+/// gathers ghost values itself and sums dot products over ranks, so the integrator never sees
+/// Tpetra. A small system can derive from DenseSecondOrderSystem (framework/time/dense_system.hpp)
+/// instead of writing factor() and solve().
+
+#include <cstddef>
+
+namespace railfe {
+
+/// The matrix a Newton iteration solves with:
+/// A = mass·M + damping·C_t(u, v) + stiffness·K_t(u, v) + rayleigh_stiffness·K_R, where
+/// C_t = ∂f_int/∂v, K_t = ∂f_int/∂u and K_R is the constant stiffness of Rayleigh damping.
+struct MatrixCoefficients {
+  double mass = 0;       ///< coefficient of M
+  double damping = 0;    ///< coefficient of the tangent damping C_t
+  double stiffness = 0;  ///< coefficient of the tangent stiffness K_t
+  double rayleigh_stiffness =
+      0;  ///< coefficient of K_R (zero without stiffness-proportional damping)
+};
+
+/// A second-order system M a + f_int(u, v) = f_ext(t), seen through the operations an implicit
+/// integrator needs. Rayleigh damping C_R = a M + b K_R is added by the integrator (its force
+/// a M v + b K_R v and its share of the matrix); f_int holds only the system's own forces
+/// (elastic, contact, discrete dampers).
+class SecondOrderSystem {
+ public:
+  virtual ~SecondOrderSystem() = default;
+
+  /// Number of unknowns this rank owns: the length of every array passed in and out.
+  virtual std::size_t n_unknowns() const = 0;
+  /// Whether M, C_t and K_t are constant and f_int = K u + C v. The integrator then factors A
+  /// once per step size and takes one solve per step, with no Newton iteration.
+  virtual bool is_linear() const { return false; }
+  /// Writes f_int(u, v) to \p force.
+  virtual void internal_force(const double* u, const double* v, double* force) = 0;
+  /// Writes f_ext(\p time) to \p force.
+  virtual void external_force(double time, double* force) = 0;
+  /// y = M x.
+  virtual void apply_mass(const double* x, double* y) = 0;
+  /// y = K_R x, the constant stiffness of Rayleigh damping. Only called when the stiffness
+  /// coefficient b ≠ 0; the default throws std::logic_error.
+  virtual void apply_rayleigh_stiffness(const double* x, double* y);
+  /// Assembles A (see MatrixCoefficients) with C_t and K_t at (\p u, \p v) and factors it (or
+  /// builds its preconditioner) for the solve() calls that follow. Throws RunError when A is
+  /// singular.
+  virtual void factor(const double* u, const double* v, const MatrixCoefficients& coefficients) = 0;
+  /// Solves A x = \p rhs with the A of the last factor() call.
+  virtual void solve(const double* rhs, double* x) = 0;
+  /// Σ x_i y_i over every rank's owned unknowns. The default sums this rank's only (serial).
+  virtual double dot(const double* x, const double* y) const;
+};
+
+}  // namespace railfe
