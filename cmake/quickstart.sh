@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The two entry points of the README:
-#   cmake/quickstart.sh demo   installs what is missing, builds, runs inputs/demo.xml
+#   cmake/quickstart.sh demo   installs what is missing, builds, runs the squeal scene's demo
+#                              (inputs/scenes/squeal_demo.xml, about a minute on one core)
 #   cmake/quickstart.sh test   installs what is missing, builds, runs every test (what CI runs)
 # Environment: BUILD_DIR (default build), JOBS (default: all cores).
 set -euo pipefail
@@ -22,9 +23,12 @@ fi
 cmake --build "$build" --parallel "$jobs"
 
 if [[ "$mode" == demo ]]; then
-  "$build/bin/railfe" inputs/demo.xml --output demo_results
+  "$build/bin/railfe" inputs/scenes/squeal_demo.xml --output demo_results
+  python3 regression/charts/contact_force_history.py demo_results/roll_contact_wheel-rail.csv \
+    demo_results/contact_forces.png || echo "(no chart: python3 with matplotlib is missing)"
   echo
-  echo "Results in demo_results/: open wheel_load.exo in ParaView; the CSV files in a spreadsheet."
+  echo "Results in demo_results/: contact_forces.png (forces), roll_contact_wheel-rail_patch_*.png"
+  echo "(contact patches), roll.exo in ParaView, the CSV files in a spreadsheet."
 else
   cd "$build"
   ctest --output-on-failure --parallel "$jobs" --timeout 1200
