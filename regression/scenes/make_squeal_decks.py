@@ -43,9 +43,9 @@ FULL = {
     "title": "full scale",
     "rail_length": 2.4, "start_x": 0.7, "zone": (0.39, 0.54),
     "zone_size": 0.001, "rail_size": 0.02, "head_size": 0.001, "section_size": 0.01,
-    "wheel_size": 0.05, "tread_size": 0.002, "arc_size": 0.001,
+    "wheel_size": 0.03, "tread_size": 0.002, "arc_size": 0.001,
     "end_time": 0.019, "ramp": 0.006, "lateral_start": 0.016, "lateral_ramp": 5e-4,
-    "patch_times": [0.014 + 0.00025 * k for k in range(21)], "mass_scaling": 0.0,
+    "patch_times": [0.014 + 0.00025 * k for k in range(21)], "mass_scaling": 2.5e-8,
 }
 DEMO = {
     "title": "demo scale",
