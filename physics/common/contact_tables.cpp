@@ -75,7 +75,8 @@ const std::vector<std::string>& contact_patch_columns() {
                                                    "slip_velocity_1_m/s",
                                                    "slip_velocity_2_m/s",
                                                    "slipping",
-                                                   "gap_m"};
+                                                   "gap_m",
+                                                   "area_m2"};
   return columns;
 }
 
@@ -110,7 +111,7 @@ void write_contact_patch(CsvWriter& file, double time, const PenaltyContactPair&
         dot(offset, frame[2]), slave.normal_force / area,
         dot(slave.tangential_force, frame[1]) / area, dot(slave.tangential_force, frame[2]) / area,
         dot(slave.slip_velocity, frame[1]), dot(slave.slip_velocity, frame[2]),
-        slave.slipping ? 1.0 : 0.0, slave.gap});
+        slave.slipping ? 1.0 : 0.0, slave.gap, area});
   }
 }
 

@@ -2,7 +2,8 @@
 /// \file
 /// The rows a contact pair writes, shared by the steps that have contact: a history row (forces
 /// in the contact frame, friction bound, area, active and slipping nodes, penetration, energies)
-/// and the patch rows (per active slave node: position, pressure, shear, slip). The contact
+/// and the patch rows (per active slave node: position, pressure, shear, slip, and the node's
+/// contact area, so that pressure and shear times area sum to the forces). The contact
 /// frame is n (the force-weighted mean normal, master towards slave), t1 (the pair's
 /// Longitudinal direction projected onto the contact plane) and t2 = n x t1.
 

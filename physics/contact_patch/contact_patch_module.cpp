@@ -23,6 +23,14 @@ ParameterSpec contact_patch_parameters() {
   spec.real("Young's modulus", 210e9, "Of both bodies.", "Pa", Range::positive());
   spec.real("Poisson's ratio", 0.3, "Of both bodies (Kalker's table covers 0 to 0.5).", "",
             Range::closed(0.0, 0.5));
+  spec.choice("Prescribe", "creepages",
+              {{"creepages", "the creepages; every theory gives the forces"},
+               {"forces",
+                "the tangential forces and the spin: the exact solver finds the longitudinal and "
+                "lateral creepages that carry them (the inverse problem, as Kalker's CONTACT "
+                "solves it; needs exact in Theories), and every theory is evaluated at those "
+                "creepages"}},
+              "What each case prescribes.");
   // Creepages beyond full sliding (|ξ|, |η| > 1) or spins of a patch turned far past the
   // flange's steepest angle over a 0.2 m radius have no rolling-contact meaning.
   spec.real_array("Longitudinal creepage", {1e-3},
@@ -30,6 +38,15 @@ ParameterSpec contact_patch_parameters() {
                   Range::closed(-1, 1));
   spec.real_array("Lateral creepage", {0}, "η per case.", "", 0, Range::closed(-1, 1));
   spec.real_array("Spin creepage", {0}, "φ per case.", "1/m", 0, Range::closed(-100, 100));
+  spec.real_array("Longitudinal force", {0},
+                  "Fx per case on body 1 (the wheel), along the rolling direction (Prescribe "
+                  "forces); arrays of length 1 are repeated to the longest. With Lateral force it "
+                  "must stay below the traction bound: sqrt(Fx² + Fy²) < μs N.",
+                  "N");
+  spec.real_array("Lateral force", {0}, "Fy per case on body 1 (Prescribe forces).", "N");
+  spec.real("Inverse tolerance", 1e-6,
+            "Prescribe forces: the creepages found carry the forces to this fraction of μs N.", "",
+            Range::closed(1e-10, 1e-2));
   spec.real("Static friction", 0.3, "μs (Coulomb: also μd).", "", Range::open_closed(0, 2));
   spec.real("Dynamic friction", -1, "μd for falling friction (negative = μs: Coulomb).", "");
   spec.real("Friction decay", 0, "c in μ = μd + (μs − μd) exp(−c |v|).", "s/m",
@@ -63,10 +80,13 @@ ParameterSpec contact_patch_parameters() {
                Range::at_least(8));
   spec.flag("Traction fields", true,
             "Write <step>_tractions.csv: per FASTSIM and exact case, every element's position, "
-            "pressure, tractions and state.");
+            "pressure, tractions, state and (exact solver) slip.");
   spec.flag("Chart", true,
             "Draw <step>_creep_forces.png and <step>_tractions.png (needs python3 with "
             "matplotlib).");
+  spec.only_when("Prescribe", {"creepages"}, {"Longitudinal creepage", "Lateral creepage"});
+  spec.only_when("Prescribe", {"forces"},
+                 {"Longitudinal force", "Lateral force", "Inverse tolerance"});
   spec.only_when("Geometry", {"curvatures"}, {"A", "B"});
   spec.only_when("Geometry", {"semi-axes"}, {"a", "b"});
   spec.only_when("Theories", {"exact"}, {"Exact grid", "Dynamic friction", "Friction decay"});
@@ -86,7 +106,8 @@ ModuleDescriptor contact_patch_module() {
   module.name = "contact patch";
   module.summary =
       "one wheel-rail contact patch under Hertz, Kalker linear, saturation laws, FASTSIM, the "
-      "creep-force table and the exact solver";
+      "creep-force table and the exact solver; creepages given, or forces (the exact solver "
+      "finds the creepages)";
   module.parameters = contact_patch_parameters;
   module.create = [](const Teuchos::ParameterList& parameters) {
     return std::make_unique<ContactPatchStep>(parameters);

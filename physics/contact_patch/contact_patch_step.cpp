@@ -15,6 +15,7 @@
 #include "framework/base/error.hpp"
 #include "framework/output/csv_writer.hpp"
 #include "physics/common/chart_script.hpp"
+#include "physics/contact_patch/contact_patch_inverse.hpp"
 
 namespace railfe {
 
@@ -71,28 +72,58 @@ void ContactPatchStep::check(const CheckContext& context) {
                         "each theory once");
     theories_.push_back(name);
   }
-  const char* keys[3] = {"Longitudinal creepage", "Lateral creepage", "Spin creepage"};
+  // Each case: ξ, η, φ, or with Prescribe forces Fx, Fy, φ.
+  const bool by_force = parameters_->get<std::string>("Prescribe") == "forces";
+  const std::array<const char*, 3> keys =
+      by_force ? std::array<const char*, 3>{"Longitudinal force", "Lateral force", "Spin creepage"}
+               : std::array<const char*, 3>{"Longitudinal creepage", "Lateral creepage",
+                                            "Spin creepage"};
   std::size_t count = 1;
   for (const char* key : keys)
     count = std::max<std::size_t>(count, parameters_->get<Teuchos::Array<double>>(key).size());
-  cases_.assign(count, {});
+  std::vector<std::array<double, 3>> values(count);
   for (int k = 0; k < 3; ++k) {
-    const auto& values = parameters_->get<Teuchos::Array<double>>(keys[k]);
-    if (values.size() != 1 && static_cast<std::size_t>(values.size()) != count)
+    const auto& given = parameters_->get<Teuchos::Array<double>>(keys[k]);
+    if (given.size() != 1 && static_cast<std::size_t>(given.size()) != count)
       throw_input_error(
           source, context.path + "/" + keys[k],
-          "has " + std::to_string(values.size()) + " values, others " + std::to_string(count),
-          "1 value or as many as the longest creepage array");
-    for (std::size_t c = 0; c < count; ++c) {
-      const double v = values.size() == 1 ? values[0] : values[c];
-      (k == 0 ? cases_[c].longitudinal : k == 1 ? cases_[c].lateral : cases_[c].spin) = v;
-    }
+          "has " + std::to_string(given.size()) + " values, others " + std::to_string(count),
+          std::string("1 value or as many as the longest ") +
+              (by_force ? "force or spin array" : "creepage array"));
+    for (std::size_t c = 0; c < count; ++c)
+      values[c][k] = given.size() == 1 ? given[0] : given[c];
+  }
+  cases_.clear();
+  forces_.clear();
+  for (const auto& v : values) {
+    cases_.push_back(by_force ? Creepages{0, 0, v[2]} : Creepages{v[0], v[1], v[2]});
+    if (by_force)
+      forces_.push_back({v[0], v[1]});
   }
   const double mu_s = parameters_->get<double>("Static friction");
   const double mu_d = parameters_->get<double>("Dynamic friction");
   if (mu_d > mu_s)
     throw_input_error(source, context.path + "/Dynamic friction", "exceeds the static friction",
                       "0 to Static friction, or negative (Coulomb)");
+  if (by_force) {
+    if (std::find(theories_.begin(), theories_.end(), "exact") == theories_.end())
+      throw_input_error(source, context.path + "/Theories",
+                        "lacks 'exact', which Prescribe forces needs to find the creepages",
+                        "Theories with exact, or Prescribe creepages");
+    const double bound = mu_s * parameters_->get<double>("Normal load");
+    for (std::size_t c = 0; c < forces_.size(); ++c) {
+      const double size = std::hypot(forces_[c][0], forces_[c][1]);
+      if (size >= bound)
+        throw_input_error(
+            source, context.path + "/Longitudinal force",
+            "case " + std::to_string(c) +
+                ": the tangential force sqrt(Fx² + Fy²) = " + CsvWriter::format(size) +
+                " N reaches the traction bound μs N = " + CsvWriter::format(bound) +
+                " N: the patch slides entirely, and steady rolling has no finite creepage for it",
+            "Longitudinal and Lateral force with sqrt(Fx² + Fy²) below Static friction × Normal "
+            "load");
+    }
+  }
   if (parameters_->get<double>("Polach slip reduction") >
       parameters_->get<double>("Polach adhesion reduction"))
     throw_input_error(source, context.path + "/Polach slip reduction",
@@ -164,6 +195,8 @@ void ContactPatchStep::run(StepContext& context) {
     if (!patch.normal.converged)
       throw RunError(context.path + ": the exact solver's normal problem did not converge");
   }
+  if (!forces_.empty())
+    find_creepages(context, patch, friction, p.get<double>("Inverse tolerance"), forces_, cases_);
 
   const bool root = context.model.comm().is_root();
   // Every file carries the step's name, so two patch steps in one deck keep their results apart.
@@ -178,14 +211,18 @@ void ContactPatchStep::run(StepContext& context) {
   if (fields)
     tractions = std::make_unique<CsvWriter>(
         context.output.staging_path(tractions_file),
-        std::vector<std::string>{"theory", "case", "x_m", "y_m", "p_Pa", "qx_Pa", "qy_Pa", "state"},
+        std::vector<std::string>{"theory", "case", "x_m", "y_m", "p_Pa", "qx_Pa", "qy_Pa", "state",
+                                 "slip_x", "slip_y"},
         root);
+  // The slip (the exact solver's; FASTSIM has none, an empty cell) is dimensionless: times the
+  // rolling speed it is the micro-slip velocity.
   auto field = [&](const std::string& theory, std::size_t k, double x, double y, double pressure,
-                   double qx, double qy, bool adhesion) {
+                   double qx, double qy, bool adhesion, double sx, double sy) {
     if (tractions)
       tractions->write_row({theory, std::to_string(k), CsvWriter::format(x), CsvWriter::format(y),
                             CsvWriter::format(pressure), CsvWriter::format(qx),
-                            CsvWriter::format(qy), adhesion ? "adhesion" : "slip"});
+                            CsvWriter::format(qy), adhesion ? "adhesion" : "slip", cell(sx),
+                            cell(sy)});
   };
   int refused = 0;
   auto progress = context.progress("cases", static_cast<double>(cases_.size()));
@@ -227,7 +264,7 @@ void ContactPatchStep::run(StepContext& context) {
         for (std::size_t e = 0; e < r.x.size(); ++e)
           field(theory, k, r.x[e], r.y[e],
                 r.bound[e] / std::max(friction.static_coefficient, 1e-300), r.px[e], r.py[e],
-                r.adhesion[e]);
+                r.adhesion[e], std::nan(""), std::nan(""));
       } else {
         const auto start = std::chrono::steady_clock::now();
         TangentialSolution t;
@@ -253,7 +290,7 @@ void ContactPatchStep::run(StepContext& context) {
         for (int e = 0; e < g.size(); ++e)
           if (patch.normal.pressure[e] > 0)
             field(theory, k, g.x(e % g.mx), g.y(e / g.mx), patch.normal.pressure[e], t.qx[e],
-                  t.qy[e], t.adhesion[e]);
+                  t.qy[e], t.adhesion[e], t.sx[e], t.sy[e]);
       }
       // Forces are NaN only where the theory has none (Polach's moment) or the case has no
       // unique steady state (its status says so); anything else non-finite is a failure.

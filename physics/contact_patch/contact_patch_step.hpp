@@ -2,6 +2,7 @@
 /// \file
 /// One "contact patch" step (see contact_patch_module.hpp).
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -15,7 +16,8 @@ class ContactPatchStep : public AnalysisStep {
  public:
   /// Keeps the step's validated parameters.
   explicit ContactPatchStep(const Teuchos::ParameterList& parameters);
-  /// Checks the theory names, the creepage arrays and that Hertz and Kalker's table apply.
+  /// Checks the theory names, the creepage (or force) arrays, that prescribed forces stay below
+  /// the traction bound, and that Hertz and Kalker's table apply.
   void check(const CheckContext& context) override;
   /// Evaluates every case under every theory and writes the files.
   void run(StepContext& context) override;
@@ -23,7 +25,8 @@ class ContactPatchStep : public AnalysisStep {
  private:
   const Teuchos::ParameterList* parameters_;
   std::vector<std::string> theories_;
-  std::vector<Creepages> cases_;
+  std::vector<Creepages> cases_;               // per case; found at run time from forces_
+  std::vector<std::array<double, 2>> forces_;  // Prescribe forces: Fx, Fy per case (N)
 };
 
 }  // namespace railfe

@@ -19,6 +19,35 @@ def column(rows, name):
     return [float(r[name]) for r in rows]
 
 
+def pressure_shear_panel(fig, ax, s1, s2, pressure, shear1, shear2, marker_size=40, arrows=None):
+    """Pressure (MPa) as colour at points s1, s2 (mm) with the shear traction (Pa) as arrows, at
+    the points \p arrows (indices; every point when None)."""
+    dots = ax.scatter(s1, s2, c=pressure, cmap="viridis", s=marker_size, marker="s")
+    fig.colorbar(dots, ax=ax, label="pressure (MPa)")
+    chosen = range(len(s1)) if arrows is None else arrows
+    if any(shear1) or any(shear2):
+        ax.quiver([s1[i] for i in chosen], [s2[i] for i in chosen], [shear1[i] for i in chosen],
+                  [shear2[i] for i in chosen], color="white", edgecolor="black", linewidth=0.4,
+                  width=0.004)
+    ax.set_title(f"pressure and shear traction (largest {max(pressure):.4g} MPa)")
+
+
+def slip_panel(ax, s1, s2, slip1, slip2, slipping, unit="m/s", marker_size=30):
+    """Stick (blue) and slip (red) points with the micro-slip of the slipping ones as arrows."""
+    stick = [i for i, s in enumerate(slipping) if not s]
+    slip = [i for i, s in enumerate(slipping) if s]
+    for group, colour, label in ((stick, "tab:blue", "not slipping"), (slip, "tab:red", "slip")):
+        if group:
+            ax.scatter([s1[i] for i in group], [s2[i] for i in group], c=colour, s=marker_size,
+                       marker="s", alpha=0.5, label=f"{label} ({len(group)} points)")
+    if slip and any(abs(slip1[i]) + abs(slip2[i]) > 0 for i in slip):
+        ax.quiver([s1[i] for i in slip], [s2[i] for i in slip], [slip1[i] for i in slip],
+                  [slip2[i] for i in slip], color="black", width=0.004)
+    largest = max((abs(complex(slip1[i], slip2[i])) for i in slip), default=0.0)
+    ax.set_title(f"micro-slip (largest {largest:.3g} {unit}) over stick and slip areas")
+    ax.legend(loc="upper right", fontsize=8)
+
+
 def main(patch_csv, png):
     with open(patch_csv) as f:
         rows = list(csv.DictReader(f))
@@ -33,32 +62,11 @@ def main(patch_csv, png):
     time = float(rows[0]["time_s"])
     s1 = [1e3 * v for v in column(rows, "s1_m")]
     s2 = [1e3 * v for v in column(rows, "s2_m")]
-    pressure = [1e-6 * v for v in column(rows, "pressure_Pa")]
-    shear1 = column(rows, "shear_1_Pa")
-    shear2 = column(rows, "shear_2_Pa")
-    slip1 = column(rows, "slip_velocity_1_m/s")
-    slip2 = column(rows, "slip_velocity_2_m/s")
+    pressure_shear_panel(fig, left, s1, s2, [1e-6 * v for v in column(rows, "pressure_Pa")],
+                         column(rows, "shear_1_Pa"), column(rows, "shear_2_Pa"))
     slipping = [r["slipping"] == "1" or float(r["slipping"]) > 0.5 for r in rows]
-
-    dots = left.scatter(s1, s2, c=pressure, cmap="viridis", s=40, marker="s")
-    fig.colorbar(dots, ax=left, label="pressure (MPa)")
-    if any(shear1) or any(shear2):
-        left.quiver(s1, s2, shear1, shear2, color="white", edgecolor="black", linewidth=0.4,
-                    width=0.004)
-    left.set_title(f"pressure and shear traction (largest {max(pressure):.4g} MPa)")
-
-    stick = [i for i, s in enumerate(slipping) if not s]
-    slip = [i for i, s in enumerate(slipping) if s]
-    for group, colour, label in ((stick, "tab:blue", "not slipping"), (slip, "tab:red", "slip")):
-        if group:
-            right.scatter([s1[i] for i in group], [s2[i] for i in group], c=colour, s=30,
-                          marker="s", alpha=0.5, label=f"{label} ({len(group)} nodes)")
-    if slip and any(abs(slip1[i]) + abs(slip2[i]) > 0 for i in slip):
-        right.quiver([s1[i] for i in slip], [s2[i] for i in slip], [slip1[i] for i in slip],
-                     [slip2[i] for i in slip], color="black", width=0.004)
-    largest = max((abs(complex(slip1[i], slip2[i])) for i in slip), default=0.0)
-    right.set_title(f"micro-slip (largest {largest:.3g} m/s) over stick and slip areas")
-    right.legend(loc="upper right", fontsize=8)
+    slip_panel(right, s1, s2, column(rows, "slip_velocity_1_m/s"),
+               column(rows, "slip_velocity_2_m/s"), slipping)
     for ax in (left, right):
         ax.set_xlabel("s1 along the longitudinal direction (mm)")
         ax.set_aspect("equal", adjustable="box")
