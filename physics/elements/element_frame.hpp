@@ -23,8 +23,8 @@ using Vector12 = Eigen::Matrix<double, 12, 1>;
 
 /// Local axes of a beam from \p a to \p b: x along b − a, y the part of \p orientation normal
 /// to x, z = x × y (rows of the returned matrix). Throws std::invalid_argument when a and b
-/// coincide or when \p orientation is parallel to the beam: the part
-/// normal to x must exceed 1e-6 |orientation|.
+/// coincide or when \p orientation is zero or parallel to the beam (its part normal to x must
+/// exceed 1e-6 |orientation|).
 Eigen::Matrix3d beam_axes(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                           const Eigen::Vector3d& orientation);
 

@@ -35,7 +35,10 @@ Vector12 spring_internal_force(const SpringDamper& spring, const Vector12& u, co
       spring_local_force(spring, u.tail<6>() - u.head<6>(), v.tail<6>() - v.head<6>());
   const Vector6 on_b = to_global<6>(local, spring.axes);  // the force that holds b against a
   Vector12 f;
-  f << -on_b, on_b;
+  for (int i = 0; i < 6; ++i) {  // element-wise: GCC 12 warns falsely on Eigen's AVX-512 copy
+    f(i) = -on_b(i);
+    f(i + 6) = on_b(i);
+  }
   return f;
 }
 

@@ -67,8 +67,9 @@ void check_convergence(const char* name, const StraightBeam& beam,
         }
         EXPECT_LT(std::abs(error), previous[k]) << name << " n " << n << " mode " << k + 1;
         previous[k] = std::abs(error);
-        if (n == (consistent ? beam.documented_consistent : beam.documented_lumped))
+        if (n == (consistent ? beam.documented_consistent : beam.documented_lumped)) {
           EXPECT_LT(std::abs(error), 0.005) << name << " n " << n << " mode " << k + 1;
+        }
       }
     }
   }
