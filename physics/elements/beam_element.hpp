@@ -20,6 +20,11 @@ struct BeamMaterial {
   double density = 0;        ///< ρ (kg/m³); 0 gives a massless beam
 };
 
+/// An isotropic beam material from E (Pa), Poisson's ratio ν and ρ (kg/m³): G = E / (2(1+ν)).
+inline BeamMaterial isotropic_beam_material(double young, double poisson, double density) {
+  return {young, young / (2 * (1 + poisson)), density};
+}
+
 /// How the mass matrix is formed.
 enum class BeamMass {
   consistent,  ///< from the Timoshenko interpolation (timoshenko_bending.hpp)

@@ -42,4 +42,9 @@ Vector12 spring_internal_force(const SpringDamper& spring, const Vector12& u, co
   return f;
 }
 
+Vector6 ground_spring_internal_force(const SpringDamper& spring, const Vector6& u,
+                                     const Vector6& v) {
+  return to_global<6>(spring_local_force(spring, u, v), spring.axes);
+}
+
 }  // namespace railfe

@@ -41,6 +41,15 @@ inline Matrix12 spring_damping(const SpringDamper& spring) {
   return two_node_matrix(spring_block(spring.damping, spring.axes));
 }
 
+/// Stiffness of \p spring from a node to the ground (6 × 6, global).
+inline Matrix6 ground_spring_stiffness(const SpringDamper& spring) {
+  return spring_block(spring.stiffness, spring.axes);
+}
+/// Damping of \p spring from a node to the ground (6 × 6, global).
+inline Matrix6 ground_spring_damping(const SpringDamper& spring) {
+  return spring_block(spring.damping, spring.axes);
+}
+
 /// Local force components k d + c ḋ (the force the spring exerts on node a; node b takes minus
 /// it) for relative displacement \p relative_u = motion of b − motion of a and relative
 /// velocity \p relative_v (global, 6 each); for a spring to ground, the node's own motion (the
@@ -51,5 +60,10 @@ Vector6 spring_local_force(const SpringDamper& spring, const Vector6& relative_u
 /// Internal force vector (12, global) of a spring between two nodes: K u + C v, the nodal
 /// forces that hold displacements \p u and velocities \p v.
 Vector12 spring_internal_force(const SpringDamper& spring, const Vector12& u, const Vector12& v);
+
+/// Internal force vector (6, global) of a spring from a node to the ground: K u + C v for the
+/// node's displacement \p u and velocity \p v.
+Vector6 ground_spring_internal_force(const SpringDamper& spring, const Vector6& u,
+                                     const Vector6& v);
 
 }  // namespace railfe

@@ -10,7 +10,7 @@ namespace railfe::test {
 inline constexpr double kYoung = 210e9, kPoisson = 0.3, kDensity = 7850;
 
 inline BeamMaterial steel() {
-  return {kYoung, kYoung / (2 * (1 + kPoisson)), kDensity};
+  return isotropic_beam_material(kYoung, kPoisson, kDensity);
 }
 
 // Start, unit direction and orientation vector of the inclined beam.

@@ -54,6 +54,12 @@ TEST(SpringDamper, TwoNodeForcesBalanceAndVanishUnderTranslation) {
   Vector12 same;
   same << u.head<6>(), u.head<6>();
   EXPECT_LT((k * same).norm(), 1e-9);
+  // To the ground: the node's own motion, the matrices of one node.
+  const Vector6 ground = ground_spring_internal_force(s, u.head<6>(), v.head<6>());
+  EXPECT_LT(
+      (ground - (ground_spring_stiffness(s) * u.head<6>() + ground_spring_damping(s) * v.head<6>()))
+          .norm(),
+      1e-12 * ground.norm());
   SpringDamper bad = s;
   bad.stiffness[2] = -1;
   EXPECT_THROW(check_spring_damper(bad), std::invalid_argument);
