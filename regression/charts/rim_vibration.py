@@ -4,23 +4,26 @@ radial and circumferential histories of a rim node relative to the rolling wheel
 PSD and Morlet wavelet power, and the PSD peaks matched to the wheel's own modes.
 
     /usr/bin/python3 regression/charts/rim_vibration.py roll_histories.csv wheel_modes.csv out \\
-        --history rim --quantity acceleration --rim 0.5 0.7 0.0 --centre 0.5 0 0.46 \\
-        --centre-history "axle a" --spin-history "axle spin" --start 0.002
+        --history rim --quantity displacement --rim 0.5 -0.065 0.9 --centre 0.5 0 0.46 \\
+        --centre-history axle --spin-history "axle spin" --start 0.002
 
-Reads an explicit step's <step>_histories.csv: the node-set history --history (columns
-<name>_<quantity>_<x|y|z>_<unit>, one rim node) and, to take out the wheel's rigid motion, the
-axle centre's history of the same quantity (--centre-history, e.g. the axle box body; or a
-constant --speed along x) and its spin about y (--spin-history, the body's angular velocity
-y; or a constant --omega, rad/s). The axle is along y and the track along x (railfe's wheel and
-rail generators). Components: lateral = y, radial = along the centre-to-rim line as it turns,
-circumferential = y x radial (the direction of travel of the rim for positive spin).
-Writes out_histories.png, out_psd.png, out_wavelet.png and out_peaks.csv (component, peak
-frequency, PSD, and the nearest mode of the modal step's <step>_modes.csv: its number, frequency,
-family, nodal circles and diameters, difference %).
+Reads an explicit step's <step>_histories.csv: the node-set history --history of one rim node
+(columns <name>_<quantity>_<x|y|z>_<unit>; or one history per component, named "<name> x",
+"<name> y", "<name> z") and, to take out the wheel's rigid motion, the axle centre's history of
+the same quantity (--centre-history, e.g. the axle box body; or a constant --speed along x) and
+its spin about y (--spin-history, the body's angular velocity y; or a constant --omega, rad/s).
+The axle is along y and the track along x (railfe's wheel and rail generators). Components:
+lateral = y, radial = along the centre-to-rim line as it turns, circumferential = y x radial
+(the direction of travel of the rim for positive spin). Accelerations so projected include the
+Coriolis coupling 2 Omega / omega of the other in-plane component (a few % at 1 kHz, 60 rad/s);
+displacements do not. Writes out_histories.png, out_psd.png, out_wavelet.png and out_peaks.csv
+(component, peak frequency, PSD, and the nearest mode of the modal step's <step>_modes.csv: its
+number, frequency, family, nodal circles and diameters, difference %).
 """
 import argparse
 import csv
 import math
+import re
 
 import matplotlib
 import numpy as np
@@ -34,11 +37,12 @@ UNITS = {"displacement": "m", "velocity": "m_per_s", "acceleration": "m_per_s2"}
 
 
 def history(columns, name, quantity, axis):
-    """The column of history name, quantity, component axis (x, y or z)."""
-    key = f"{name}_{quantity.replace(' ', '_')}_{axis}_"
-    found = [c for c in columns if c.startswith(key)]
+    """The column of history name (or "name <anything>", one history per component),
+    quantity, component axis (x, y or z)."""
+    pattern = re.escape(name) + r"( [^_]*)?_" + quantity.replace(" ", "_") + f"_{axis}_[a-z0-9_]+"
+    found = [c for c in columns if re.fullmatch(pattern, c)]
     if len(found) != 1:
-        raise SystemExit(f"no single column {key}* in the histories (have: {', '.join(columns)})")
+        raise SystemExit(f"not one column {pattern} in the histories: {', '.join(columns)}")
     return np.array(columns[found[0]], dtype=float)
 
 
@@ -187,6 +191,7 @@ def draw(prefix, t, values, spectra, wavelet_f, unit, rows):
 
 
 def main(argv=None):
+    """Runs the chart on the command line argv; returns the peak rows and the spectra."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("histories_csv")
     parser.add_argument("modes_csv", help="a modal step's <step>_modes.csv ('' = none)")
@@ -242,7 +247,7 @@ def main(argv=None):
     draw(a.prefix, t, values, spectra, np.linspace(max(df, top / 200), top, 160),
          UNITS[a.quantity], rows)
     print(f"{a.prefix}_peaks.csv: {len(rows)} peaks; frequency resolution {df:.4g} Hz")
-    return rows
+    return rows, spectra
 
 
 if __name__ == "__main__":

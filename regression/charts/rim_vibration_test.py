@@ -61,8 +61,10 @@ def write_inputs(work, quantity):
     histories = os.path.join(work, f"{quantity}_histories.csv")
     with open(histories, "w", newline="") as handle:
         out = csv.writer(handle)
-        out.writerow(["time_s"] + [f"{n}_{quantity}_{c}_{unit}" for n in ("rim", "axle")
-                                   for c in "xyz"] + ["axle_angular_velocity_y_rad_per_s"])
+        # Both namings: one history "rim" per node set, or "axle x", "axle y", ... per component.
+        out.writerow(["time_s"] + [f"rim_{quantity}_{c}_{unit}" for c in "xyz"] +
+                     [f"axle {c}_{quantity}_{c}_{unit}" for c in "xyz"] +
+                     ["axle spin_angular_velocity_y_rad_per_s"])
         for row in zip(fine[step], *rim[step].T, *centre[step].T, spin[step]):
             out.writerow([f"{v:.17g}" for v in row])
     modes = os.path.join(work, "modes.csv")
@@ -71,6 +73,22 @@ def write_inputs(work, quantity):
         out.writerow(["mode", "frequency_hz", "family", "nodal_circles", "nodal_diameters"])
         out.writerows(MODES)
     return histories, modes
+
+
+def separation(spectra, quantity):
+    """Each sine's own component holds at least 100 times the PSD the others hold at its
+    frequency: the turning frame is followed (a wrong one mixes radial and circumferential)."""
+    failures = []
+    for name, sines in SINES.items():
+        for f, _ in sines:
+            own = spectra[name][1][np.argmin(abs(spectra[name][0] - f))]
+            for other in SINES:
+                if other != name:
+                    leak = spectra[other][1][np.argmin(abs(spectra[other][0] - f))] / own
+                    print(f"{quantity:12s} {f:7.1f} Hz {name} sine seen in {other}: {leak:.1e}")
+                    if leak > 1e-2:
+                        failures.append(f"{quantity} {name} {f} Hz: {leak:.2g} of it in {other}")
+    return failures
 
 
 def check(rows, resolution, quantity):
@@ -106,11 +124,13 @@ def main(work):
         histories, modes = write_inputs(work, quantity)
         args = [histories, modes, os.path.join(work, quantity), "--history", "rim",
                 "--quantity", quantity, "--rim", *map(str, RIM), "--centre", *map(str, CENTRE),
-                "--centre-history", "axle", "--spin-history", "axle", "--segments", "8",
+                "--centre-history", "axle", "--spin-history", "axle spin", "--segments", "8",
                 "--peaks", "3", "--max-hz", "2500"]
-        rows = rim_vibration.main(args)
+        rows, spectra = rim_vibration.main(args)
         resolution = 1 / (0.2 * 2 / 9)  # Welch segment length: 2 T / (segments + 1)
         failures += check(rows, resolution, quantity)
+        if quantity == "displacement":
+            failures += separation(spectra, quantity)
     t = np.arange(0, 0.05, 1e-5)
     frequencies = np.linspace(100, 2000, 96)
     power = rim_vibration.morlet_power(np.sin(2 * np.pi * 700 * t), 1e-5, frequencies)
