@@ -24,6 +24,7 @@ import argparse
 import csv
 import math
 import re
+import subprocess
 
 import matplotlib
 import numpy as np
@@ -53,6 +54,25 @@ def read_columns(path):
     if len(rows) < 16:
         raise SystemExit(f"{path}: {len(rows)} rows, too short for a spectrum")
     return {name: [float(r[name]) for r in rows] for name in rows[0]}
+
+
+def node_set_positions(exodus, name):
+    """Positions (k, 3) of the nodes of node set name in an Exodus file, read with ncdump."""
+    def data(variables):
+        command = ["ncdump", "-v", variables, exodus]
+        return subprocess.run(command, capture_output=True, text=True, check=True).stdout
+
+    def values(text, variable):
+        body = re.search(variable + r" =([^;]*);", text.split("data:", 1)[1]).group(1)
+        return np.array(body.replace(",", " ").split(), dtype=float)
+
+    names = re.findall(r'"([^"]*)"', data("ns_names").split("data:", 1)[1])
+    if name not in names:
+        raise SystemExit(f"{exodus}: no node set '{name}' (have: {', '.join(names)})")
+    k = names.index(name) + 1
+    nodes = values(data(f"node_ns{k}"), f"node_ns{k}").astype(int) - 1
+    text = data("coordx,coordy,coordz")
+    return np.stack([values(text, f"coord{c}")[nodes] for c in "xyz"], 1)
 
 
 def rim_components(t, rim, centre, centre_motion, spin, rim_ref, centre_ref, quantity):
@@ -200,6 +220,11 @@ def main(argv=None):
     parser.add_argument("--quantity", default="acceleration", choices=sorted(UNITS))
     parser.add_argument("--rim", type=float, nargs=3, default=None, help="rim node at rest (m)")
     parser.add_argument("--centre", type=float, nargs=3, default=None, help="axle centre (m)")
+    parser.add_argument("--exodus", help="an Exodus file of the mesh, for the two sets below")
+    parser.add_argument("--rim-set", help="node set of the rim node in --exodus (for --rim)")
+    parser.add_argument("--centre-set",
+                        help="node set centred on the axle, e.g. wheel.axle_end (for --centre: "
+                        "the middle of its bounding box)")
     parser.add_argument("--centre-history", help="axle centre's history name (same quantity)")
     parser.add_argument("--speed", type=float, default=0.0, help="constant centre speed along x")
     parser.add_argument("--spin-history", help="history of the spin about y (angular velocity)")
@@ -212,6 +237,14 @@ def main(argv=None):
     parser.add_argument("--max-hz", type=float, default=None,
                         help="top of the charts and of the peak search (default Nyquist)")
     a = parser.parse_args(argv)
+    if a.exodus and a.rim_set:
+        points = node_set_positions(a.exodus, a.rim_set)
+        if len(points) != 1:
+            raise SystemExit(f"--rim-set '{a.rim_set}' holds {len(points)} nodes, not one")
+        a.rim = list(points[0])
+    if a.exodus and a.centre_set:
+        points = node_set_positions(a.exodus, a.centre_set)
+        a.centre = list(0.5 * (points.min(0) + points.max(0)))
     columns = read_columns(a.histories_csv)
     t = np.array(columns["time_s"])
     keep = t >= a.start
