@@ -185,7 +185,9 @@ def draw(prefix, t, values, spectra, wavelet_f, unit, rows):
     fig, axes = plt.subplots(3, 1, figsize=(9, 7), sharex=True)
     for ax, name in zip(axes, COMPONENTS):
         f, p = spectra[name]
+        shown = p[(f > 0) & (f <= wavelet_f[-1])]
         ax.semilogy(f, p, lw=0.8)
+        ax.set_ylim(0.5 * shown.min(), 5 * shown.max())
         for row in (r for r in rows if r[0] == name):
             ax.axvline(float(row[1]), color="red", lw=0.5, ls="--")
             label = f"{float(row[1]):.0f} Hz" + (f"\n({row[6]},{row[7]}) {row[5]}" if row[4] else "")
