@@ -120,7 +120,7 @@ def morlet_power(x, dt, frequencies, w0=6.0):
     computed in Fourier space (Torrence and Compo 1998), at frequencies (Hz)."""
     n = len(x)
     size = 1 << int(math.ceil(math.log2(2 * n)))  # zero padding against wrap-around
-    spectrum = np.fft.fft(x - np.mean(x), size)
+    spectrum = np.fft.fft(signal.detrend(x), size)  # a trend would ring at both ends
     omega = 2 * np.pi * np.fft.fftfreq(size, dt)
     power = np.empty((len(frequencies), n))
     for i, f in enumerate(frequencies):
