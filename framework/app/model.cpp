@@ -7,7 +7,7 @@
 namespace railfe {
 
 Model::Model(Deck deck, Mesh mesh, const Communicator& comm, PartitionMethod method)
-    : deck_(std::move(deck)), mesh_(std::make_unique<Mesh>(std::move(mesh))) {
+    : deck_(std::move(deck)), mesh_(std::make_unique<Mesh>(std::move(mesh))), method_(method) {
   partition_ = std::make_unique<MeshPartition>(*mesh_, comm, method);
 }
 

@@ -31,6 +31,8 @@ class Model {
   const MeshPartition& partition() const { return *partition_; }
   /// The communicator of the run.
   const Communicator& comm() const { return partition_->comm(); }
+  /// How the mesh was split over ranks (for a step that partitions a part of it again).
+  PartitionMethod partition_method() const { return method_; }
   /// A validated top-level section of the deck (e.g. "Materials"); throws std::logic_error if the
   /// deck has none (owners declare whether their section is required).
   const Teuchos::ParameterList& section(const std::string& name) const;
@@ -47,6 +49,7 @@ class Model {
   Deck deck_;
   std::unique_ptr<Mesh> mesh_;
   std::unique_ptr<MeshPartition> partition_;
+  PartitionMethod method_;
   std::map<int, std::unique_ptr<DofMap>> dof_maps_;
   std::map<std::string, Teuchos::RCP<TpetraVector>> fields_;
 };

@@ -84,4 +84,38 @@ void append_part(Mesh& model, const Mesh& part, const std::string& part_name) {
     model.side_sets[i].id = static_cast<int>(i) + 1;
 }
 
+Mesh mesh_of_blocks(const Mesh& mesh, const std::vector<int>& keep) {
+  Mesh result = mesh;
+  std::vector<char> kept(mesh.blocks.size(), 0);
+  for (int b : keep)
+    kept[b] = 1;
+  for (std::size_t b = 0; b < result.blocks.size(); ++b) {
+    if (kept[b])
+      continue;
+    result.blocks[b].offsets = {0};
+    result.blocks[b].connectivity.clear();
+  }
+  result.number_blocks();
+  for (SideSet& set : result.side_sets) {
+    std::vector<Side> sides;
+    for (const Side& side : set.sides) {
+      const int b = mesh.block_of(side.element);
+      if (kept[b])
+        sides.push_back(
+            {result.blocks[b].first_element + (side.element - mesh.blocks[b].first_element),
+             side.face});
+    }
+    set.sides = std::move(sides);
+  }
+  return result;
+}
+
+std::vector<char> used_nodes(const Mesh& mesh) {
+  std::vector<char> used(static_cast<std::size_t>(mesh.n_nodes()), 0);
+  for (const ElementBlock& block : mesh.blocks)
+    for (GlobalIndex node : block.connectivity)
+      used[node] = 1;
+  return used;
+}
+
 }  // namespace railfe

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 #include "framework/mesh/mesh.hpp"
 
@@ -34,5 +35,14 @@ void place_mesh(Mesh& mesh, const RigidPlacement& placement);
 /// node sets and side sets renamed "<part_name>.<name>", and the Exodus ids of all blocks and
 /// sets renumbered 1, 2, ... in model order so they are unique over the model.
 void append_part(Mesh& model, const Mesh& part, const std::string& part_name);
+
+/// The model of \p mesh reduced to the blocks \p keep (indices into Mesh::blocks): the other
+/// blocks stay, with no elements, so block indices (and the material of each) are unchanged;
+/// nodes and node sets stay as they are (a node no kept element uses carries no unknowns in a
+/// MeshPartition of the result); side sets keep the faces of kept elements, renumbered.
+Mesh mesh_of_blocks(const Mesh& mesh, const std::vector<int>& keep);
+
+/// Whether some element of \p mesh uses each node (by global node index).
+std::vector<char> used_nodes(const Mesh& mesh);
 
 }  // namespace railfe

@@ -184,6 +184,34 @@ TEST(MeshParts, TwoBoxesPlacedRenamedAndRenumbered) {
   EXPECT_GT(normal[1], 0);
 }
 
+// Keeping part b's block only: a's block is emptied but stays (block indices unchanged); b's
+// elements renumber from 0, its faces follow them; a's faces and a's nodes' use are gone;
+// node sets and coordinates are untouched.
+TEST(MeshParts, MeshOfBlocksKeepsOnlyTheirElements) {
+  const Mesh mesh = build_from(two_boxes());
+  const Mesh kept = mesh_of_blocks(mesh, {1});
+  ASSERT_EQ(kept.blocks.size(), 2u);
+  EXPECT_EQ(kept.blocks[0].n_elements(), 0);
+  EXPECT_EQ(kept.blocks[1].n_elements(), 8);
+  EXPECT_EQ(kept.blocks[1].first_element, 0);
+  EXPECT_EQ(kept.blocks[1].connectivity, mesh.blocks[1].connectivity);
+  EXPECT_EQ(kept.coordinates, mesh.coordinates);
+  EXPECT_EQ(kept.node_set("a.xmin", "", "").nodes, mesh.node_set("a.xmin", "", "").nodes);
+  EXPECT_TRUE(kept.side_set("a.xmin", "", "").sides.empty());
+  const auto& sides = kept.side_set("b.xmax", "", "").sides;
+  const auto& before = mesh.side_set("b.xmax", "", "").sides;
+  ASSERT_EQ(sides.size(), before.size());
+  for (std::size_t s = 0; s < sides.size(); ++s) {
+    EXPECT_EQ(sides[s].element, before[s].element - 8);
+    EXPECT_EQ(sides[s].face, before[s].face);
+  }
+  EXPECT_NO_THROW(check_mesh(kept));
+  const std::vector<char> used = used_nodes(kept);
+  const GlobalIndex n = mesh.n_nodes() / 2;
+  for (GlobalIndex node = 0; node < mesh.n_nodes(); ++node)
+    EXPECT_EQ(used[node], node >= n ? 1 : 0) << "node " << node;
+}
+
 TEST(MeshParts, RotationAboutASpaceDiagonal) {
   // 120 degrees about (1, 1, 1) sends x to y, y to z and z to x: (x, y, z) -> (z, x, y).
   Mesh mesh = generate_box(box_spec());

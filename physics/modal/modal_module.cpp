@@ -81,6 +81,11 @@ ParameterSpec modal_parameters() {
   spec.real("Tolerance", 1e-10, "Convergence tolerance of the Ritz residuals (relative).", "",
             Range::open(0.0, 1.0));
 
+  spec.text_array("Blocks", {},
+                  "Element blocks whose modes are computed (none = every block): the elements "
+                  "of other blocks are left out and their nodes carry no unknowns, so a wheel's "
+                  "modes come from the mesh a later step rolls on a rail. Supports and "
+                  "Classification act on these blocks.");
   ParameterSpec support("Fixes components of a node set (zero displacement).");
   support.required_text("Node set", "The nodes.");
   support.text("Components", "xyz", "Fixed components: letters of 'xyz'.");

@@ -93,9 +93,9 @@ void ModalStep::classify(const MeshPartition& partition, const TpetraMultiVector
   }
 }
 
-void ModalStep::write_results(StepContext& context, const std::vector<ModeRecord>& records,
+void ModalStep::write_results(StepContext& context, const MeshPartition& partition,
+                              const std::vector<ModeRecord>& records,
                               const TpetraMultiVector* modes) const {
-  const MeshPartition& partition = context.model.partition();
   const bool root = partition.comm().is_root();
   const std::string& name = context.step_name;
   const std::string csv_path = context.output.staging_path(name + "_modes.csv");
@@ -128,8 +128,9 @@ void ModalStep::write_results(StepContext& context, const std::vector<ModeRecord
   if (!parameters_->get<bool>("Exodus") || modes == nullptr)
     return;
   // One output time per mode (time = mode number), so ParaView steps through the modes and its
-  // Exodus reader can animate each one ("Animate Vibrations").
-  ExodusWriter writer(context.output.staging_path(name + ".exo"), partition.mesh(),
+  // Exodus reader can animate each one ("Animate Vibrations"). The whole mesh is written: blocks
+  // left out by Blocks stand still beside the modes (their nodes carry no unknowns: zeros).
+  ExodusWriter writer(context.output.staging_path(name + ".exo"), context.model.mesh(),
                       context.model.deck().parameters->get<std::string>("Title"),
                       {"displacement_x", "displacement_y", "displacement_z"}, {}, root);
   for (std::size_t j = 0; j < records.size(); ++j) {

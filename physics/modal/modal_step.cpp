@@ -16,6 +16,7 @@
 #include "framework/base/error.hpp"
 #include "framework/base/resources.hpp"
 #include "framework/deck/validation.hpp"
+#include "framework/mesh/mesh_parts.hpp"
 #include "framework/output/csv_writer.hpp"
 #include "framework/output/field_gather.hpp"
 #include "physics/common/solid_assembly.hpp"
@@ -183,6 +184,58 @@ int ModalStep::first_batch(long long free_dofs) const {
              : automatic_first_batch(free_dofs);
 }
 
+std::vector<char> ModalStep::check_blocks_and_supports(const CheckContext& context) {
+  const Mesh& mesh = context.model.mesh();
+  const std::string& deck = context.source();
+  const std::string& path = context.path;
+  const auto& names = parameters_->get<Teuchos::Array<std::string>>("Blocks");
+  block_names_.assign(names.begin(), names.end());
+  block_mesh_.reset();
+  std::string kept = "the mesh";
+  if (!block_names_.empty()) {
+    std::vector<int> blocks;
+    kept = "the Blocks {";
+    for (const std::string& name : block_names_) {
+      blocks.push_back(mesh.block_index(name, deck, path + "/Blocks"));
+      kept += (blocks.size() > 1 ? ", " : "") + name;
+    }
+    kept += "}";
+    block_mesh_ = std::make_unique<Mesh>(mesh_of_blocks(mesh, blocks));
+  }
+  const std::vector<char> active = used_nodes(block_mesh_ ? *block_mesh_ : mesh);
+
+  supports_.clear();
+  const auto& supports = parameters_->sublist("Supports");
+  for (auto it = supports.begin(); it != supports.end(); ++it) {
+    const std::string name = supports.name(it);
+    const auto& list = supports.sublist(name);
+    const std::string where = path + "/Supports/" + name;
+    ModalSupport support{
+        name, list.get<std::string>("Node set"),
+        parse_components(list.get<std::string>("Components"), deck, where + "/Components")};
+    const auto& nodes = mesh.node_set(support.node_set, deck, where + "/Node set").nodes;
+    if (std::none_of(nodes.begin(), nodes.end(), [&](GlobalIndex n) { return active[n]; })) {
+      throw_input_error(
+          deck, where + "/Node set",
+          "node set '" + support.node_set + "' has no node in " + kept + ": it would fix nothing",
+          "a node set on the elements the modal step computes");
+    }
+    supports_.push_back(support);
+  }
+  return active;
+}
+
+const DofMap& ModalStep::step_dofs(Model& model) {
+  if (!block_mesh_)
+    return model.dofs(3);
+  if (!block_dofs_) {
+    block_partition_ =
+        std::make_unique<MeshPartition>(*block_mesh_, model.comm(), model.partition_method());
+    block_dofs_ = std::make_unique<DofMap>(*block_partition_, 3);
+  }
+  return *block_dofs_;
+}
+
 void ModalStep::check(const CheckContext& context) {
   const Mesh& mesh = context.model.mesh();
   const std::string& deck = context.source();
@@ -197,33 +250,23 @@ void ModalStep::check(const CheckContext& context) {
     }
   }
 
-  supports_.clear();
-  const auto& supports = parameters_->sublist("Supports");
-  for (auto it = supports.begin(); it != supports.end(); ++it) {
-    const std::string name = supports.name(it);
-    const auto& list = supports.sublist(name);
-    const std::string where = path + "/Supports/" + name;
-    ModalSupport support{
-        name, list.get<std::string>("Node set"),
-        parse_components(list.get<std::string>("Components"), deck, where + "/Components")};
-    mesh.node_set(support.node_set, deck, where + "/Node set");
-    supports_.push_back(support);
-  }
-
   const auto& band = parameters_->get<Teuchos::Array<double>>("Frequency band");
   if (!band.empty() && !(band[0] < band[1])) {
     throw_input_error(deck, path + "/Frequency band", "low end is not below the high end",
                       "{low, high} with low < high (Hz)");
   }
 
-  // Fixed DOFs carry no mass and no eigenvalue: every size limit counts the free ones.
+  // Fixed DOFs carry no mass and no eigenvalue: every size limit counts the free ones, of the
+  // nodes that carry unknowns (those the kept elements use).
+  const std::vector<char> active = check_blocks_and_supports(context);
   std::vector<char> fixed(3 * static_cast<std::size_t>(mesh.n_nodes()), 0);
   for (const auto& support : supports_)
     for (GlobalIndex node : mesh.node_set(support.node_set, deck, path).nodes)
       for (int c : support.components)
-        fixed[3 * static_cast<std::size_t>(node) + c] = 1;
+        fixed[3 * static_cast<std::size_t>(node) + c] = active[node];
   const long long n_fixed = std::count(fixed.begin(), fixed.end(), 1);
-  free_dofs_ = static_cast<long long>(fixed.size()) - n_fixed;
+  const long long n_dofs = 3 * static_cast<long long>(std::count(active.begin(), active.end(), 1));
+  free_dofs_ = n_dofs - n_fixed;
   if (free_dofs_ == 0) {
     throw_input_error(deck, path + "/Supports", "fix every DOF of the model: nothing can vibrate",
                       "supports that leave some DOFs free");
@@ -233,7 +276,7 @@ void ModalStep::check(const CheckContext& context) {
                         parameters_->get<int>("Krylov blocks"), free_dofs_);
   if (!plan.problem.empty()) {
     throw_input_error(deck, path + "/" + plan.parameter,
-                      plan.problem + " (" + std::to_string(fixed.size()) + " DOFs, " +
+                      plan.problem + " (" + std::to_string(n_dofs) + " DOFs, " +
                           std::to_string(n_fixed) + " fixed)",
                       plan.allowed);
   }
@@ -273,7 +316,8 @@ void ModalStep::check(const CheckContext& context) {
 
 void ModalStep::run(StepContext& context) {
   Model& model = context.model;
-  const DofMap& dofs = model.dofs(3);
+  const DofMap& dofs = step_dofs(model);
+  const MeshPartition& partition = dofs.partition();
   const Communicator& comm = model.comm();
   const std::string section = "Step " + context.step_name + " (modal)";
   RunSummary& summary = context.summary;
@@ -287,7 +331,7 @@ void ModalStep::run(StepContext& context) {
   LinearConstraints constraints(dofs, context.source());
   for (const auto& support : supports_) {
     for (GlobalIndex node : model.mesh().node_set(support.node_set, "", "").nodes) {
-      if (model.partition().node_ranks()[node] != comm.rank())
+      if (partition.node_ranks()[node] != comm.rank())
         continue;
       for (int c : support.components)
         constraints.prescribe(3 * node + c, 0.0);
@@ -442,7 +486,7 @@ void ModalStep::run(StepContext& context) {
         Teuchos::ArrayView<const std::size_t>(columns.data(), columns.size()));
   }
   if (classify_ && !modes.is_null())
-    classify(model.partition(), *modes, records);
+    classify(partition, *modes, records);
   for (auto& record : records) {
     if (record.rigid) {
       record.shape = ModeClass();
@@ -469,6 +513,12 @@ void ModalStep::run(StepContext& context) {
     if (comm.is_root())
       std::fprintf(stderr, "railfe: warning: step '%s': %s\n", context.step_name.c_str(),
                    warning.c_str());
+  }
+  if (!block_names_.empty()) {
+    std::string blocks;
+    for (const std::string& name : block_names_)
+      blocks += (blocks.empty() ? "" : ", ") + name;
+    summary.add(section, "blocks", blocks);
   }
   summary.add(section, "degrees of freedom", static_cast<double>(dofs.n_global_dofs()));
   summary.add(section, "fixed DOFs", static_cast<double>(constraints.n_prescribed()));
@@ -498,7 +548,7 @@ void ModalStep::run(StepContext& context) {
   summary.add(section, "time: eigensolver iterations", result.iteration_seconds, "s");
 
   clock.restart();
-  write_results(context, records, modes.get());
+  write_results(context, partition, records, modes.get());
   if (!references_.empty())
     write_validation(context, records);
   if (p.get<bool>("Export matrices"))

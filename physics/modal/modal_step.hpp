@@ -2,6 +2,7 @@
 /// \file
 /// One modal analysis (see modal_module.hpp).
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,12 +49,17 @@ class ModalStep : public AnalysisStep {
   void run(StepContext& context) override;
 
  private:
+  // The DOFs the step computes on: the model's, or those of the Blocks' own partition (made on
+  // first use, collective).
+  const DofMap& step_dofs(Model& model);
+  // Reads Blocks and Supports; returns the nodes that carry unknowns.
+  std::vector<char> check_blocks_and_supports(const CheckContext& context);
   // Modes of the first eigensolver batch: Modes, or its automatic value.
   int first_batch(long long free_dofs) const;
   void classify(const MeshPartition& partition, const TpetraMultiVector& modes,
                 std::vector<ModeRecord>& records) const;
-  void write_results(StepContext& context, const std::vector<ModeRecord>& records,
-                     const TpetraMultiVector* modes) const;
+  void write_results(StepContext& context, const MeshPartition& partition,
+                     const std::vector<ModeRecord>& records, const TpetraMultiVector* modes) const;
   void write_validation(StepContext& context, const std::vector<ModeRecord>& records) const;
   static void export_matrices(StepContext& context, const TpetraMatrix& K, const TpetraMatrix& M);
   void draw_chart(StepContext& context, const std::string& csv_path) const;
@@ -61,6 +67,10 @@ class ModalStep : public AnalysisStep {
   const Teuchos::ParameterList* parameters_;
   std::optional<MaterialTable> materials_;
   std::vector<ModalSupport> supports_;
+  std::vector<std::string> block_names_;            // Blocks (empty = the whole mesh)
+  std::unique_ptr<Mesh> block_mesh_;                // the mesh of Blocks, if given
+  std::unique_ptr<MeshPartition> block_partition_;  // its partition
+  std::unique_ptr<DofMap> block_dofs_;              // its DOFs
   std::vector<ReferenceMode> references_;
   AxisymmetricFrame frame_;
   ClassifierSettings classifier_;
