@@ -22,10 +22,10 @@ sys.path.insert(0, HERE)
 from railfe_runs import csv_rows, run_deck, step_section, study_parser, typed_rows, write_rows  # noqa: E402
 
 VARIANTS = [
-    ("shipped", "as shipped: seats on pad and ballast in series, 1.2 m track", []),
+    ("shipped", "as shipped: seats on pad and ballast in series; 1.2 m track", []),
     ("sleeper masses", "sleepers as 150 kg point masses between pad and ballast",
      ["--sleepers", "bodies"]),
-    ("long track", "2.4 m track (4 seats), the wheel starting at the same place in it",
+    ("long track", "2.4 m track (4 seats); the wheel starting at the same place in it",
      ["--rail-length", "2.4", "--start-x", "1.05"]),
 ]
 COLUMNS = {"normal": "normal_force_N", "longitudinal": "tangential_1_N",
