@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Writes the squeal rolling scene's decks (issue 16): inputs/scenes/squeal_case1..5.xml at full
-scale, inputs/scenes/squeal_demo.xml (case 3, coarse, about a minute) and, for the studies, any
+scale, inputs/scenes/squeal_demo.xml (case 3, coarse, about two minutes) and, for the studies, any
 variant (mesh size, track length, sleepers, end time) with --variant options.
 
 One model, every deck: an S1002 wheel (920 mm) with half its axle on a 54E1 rail inclined 1:40
