@@ -116,18 +116,19 @@ def track_springs(seats, sleepers, bodies):
     return springs
 
 
-def wheel_modes():
+def wheel_modes(x0):
     """The modal step of the wheel and half axle alone (the rail left out), clamped at the axle
     end as the axle box holds it: the modes the rim's spectra are matched to (the seed's Table
     4), from the very mesh that rolls. The refined arc breaks the wheel's symmetry, so doublets
-    split by up to a few 1e-3."""
+    split: by up to 0.35 % in frequency, 0.7 % in eigenvalue, at demo scale."""
     return "\n".join([
         p_("Module", "string", "modal"),
         p_("Blocks", "Array(string)", "{wheel.wheel, wheel.axle}"),
         p_("Frequency band", "Array(double)", "{20, 2500}"),
-        p_("Doublet tolerance", "double", "5e-3"),
+        p_("Doublet tolerance", "double", "2e-2"),
         block("Supports", block("axle box", p_("Node set", "string", "wheel.axle_end"), 0), 0),
-        block("Classification", p_("Axisymmetric", "bool", "true"), 0)])
+        block("Classification", p_("Axisymmetric", "bool", "true") + "\n" +
+              p_("Axis origin", "Array(double)", fmt([x0, 0, AXIS_HEIGHT])), 0)])
 
 
 def tread_box(arc):
@@ -298,7 +299,7 @@ def deck(case, p, sleepers=True):
         block("Output", "\n".join([
             p_("Energy interval", "int", "100"), p_("History interval", "int", "10"),
             block("Histories", "\n".join(histories), 0)]), 0)]
-    steps = [block("wheel modes", wheel_modes(), 0)] if p.get("modes") else []
+    steps = [block("modes", wheel_modes(x0), 0)] if p.get("modes") else []
     steps += [block("preload", preload, 0), block("roll", "\n".join(roll), 0)]
     L.append(block("Steps", "\n".join(steps), 2))
     L.append("</ParameterList>")
@@ -346,7 +347,7 @@ def header(case, p, seats, zone, arc, motion):
 def modes_text(p):
     if not p.get("modes"):
         return ""
-    return ("Step \"wheel modes\": the wheel and half axle alone, clamped at the axle end, every mode\n"
+    return ("Step \"modes\": the wheel and half axle alone, clamped at the axle end, every mode\n"
             "  from 20 to 2500 Hz (the rim spectra's peaks are matched to them).\n  ")
 
 
