@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Writes the squeal rolling scene's decks (issue 16): inputs/scenes/squeal_case1..5.xml at full
-scale, inputs/scenes/squeal_demo.xml (case 3, coarse, about two minutes) and, for the studies, any
+scale, inputs/scenes/squeal_demo.xml (case 3, coarse, about a minute) and, for the studies, any
 variant (mesh size, track length, sleepers, end time) with --variant options.
 
 One model, every deck: an S1002 wheel (920 mm) with half its axle on a 54E1 rail inclined 1:40
@@ -51,10 +51,10 @@ FULL = {
 DEMO = {
     "title": "demo scale",
     "rail_length": 1.2, "start_x": 0.45, "zone": (-0.005, 0.05),
-    "zone_size": 0.003, "rail_size": 0.04, "head_size": 0.003, "section_size": 0.02,
-    "wheel_size": 0.06, "tread_size": 0.003, "arc_size": 0.003,
+    "zone_size": 0.004, "rail_size": 0.04, "head_size": 0.004, "section_size": 0.02,
+    "wheel_size": 0.06, "tread_size": 0.004, "arc_size": 0.004,
     "end_time": 0.0016, "ramp": 5e-4, "lateral_start": 6e-4, "lateral_ramp": 1e-4,
-    "patch_times": [0.0006, 0.001, 0.0013, 0.0016], "mass_scaling": 7.5e-8,
+    "patch_times": [0.0006, 0.001, 0.0013, 0.0016], "mass_scaling": 1.0e-7,
 }
 
 def friction(case):
