@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The two entry points of the README:
 #   cmake/quickstart.sh demo   installs what is missing, builds, runs the squeal scene's demo
-#                              (inputs/scenes/squeal_demo.xml, about two minutes on one core)
+#                              (inputs/scenes/squeal_demo.xml, about a minute on one core)
 #   cmake/quickstart.sh test   installs what is missing, builds, runs every test (what CI runs)
 # Environment: BUILD_DIR (default build), JOBS (default: all cores).
 set -euo pipefail

@@ -132,8 +132,9 @@ def wheel_modes(x0):
 
 
 def tread_box(arc):
-    """A box (wheel part coordinates) around the tread faces of the refined arc: only they can
-    touch the rail in the run, so only they are searched for contact."""
+    """A box (wheel part coordinates) around the tread faces from the lowest point (the contact at
+    the start) to the end of the refined arc: only they can touch the rail in the run, so only
+    they are searched for contact."""
     lo, hi = (math.radians(a) for a in arc)
     r_in, r_out, margin = 0.40, 0.52, 0.01
     return [r_in * math.cos(lo) - margin, r_out * math.cos(hi) + margin, -1, 1,
@@ -204,7 +205,8 @@ def deck(case, p, sleepers=True):
             block("all", p_("Box", "Array(double)", "{-1, 1, -1, 1, -1, 1}"), 0),
             block("rim point", p_("Point", "Array(double)", fmt(rim)), 0)]), 0),
         block("Side sets", block("rolling tread", p_("Box", "Array(double)", fmt(
-            tread_box(arc))) + "\n" + p_("Within", "string", "tread"), 0), 0),
+            tread_box((min(arc[0], 270 - margin), arc[1])))) + "\n" +
+            p_("Within", "string", "tread"), 0), 0),
         p_("Translation", "Array(double)", fmt([x0, 0, AXIS_HEIGHT]))])
     mesh = "\n".join([
         p_("Type", "string", "parts"),
