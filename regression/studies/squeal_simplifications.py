@@ -107,7 +107,7 @@ def plot(work):
                                   "lateral force (kN)")):
         axis.set_ylabel(label)
         axis.grid(alpha=0.3)
-    axes[0].legend(fontsize=8)
+    axes[1].legend(fontsize=8, loc="upper left")  # that panel is empty there
     axes[-1].set_xlabel("time (ms)")
     fig.suptitle("Squeal demo (case 3): what the track's simplifications change")
     fig.tight_layout()
