@@ -35,6 +35,8 @@ SLEEPER_MASS = 150.0  # kg, half a concrete monoblock sleeper
 PAD = {"vertical": 1.3e9, "damping": 4.5e4, "shear": 5.0e7}  # N/m, N s/m, N/m
 BALLAST = {"vertical": 4.5e7, "damping": 3.2e4}  # N/m, N s/m per sleeper (per rail seat)
 PAD_LENGTH = 0.15  # m along the rail under each seat
+# Pad and ballast in series (N/m): a seat's vertical support in statics and in the shipped decks.
+SEAT_VERTICAL = PAD["vertical"] * BALLAST["vertical"] / (PAD["vertical"] + BALLAST["vertical"])
 
 # Lateral motion of the axle box (cases 2-4 small, medium, large): the lateral speed reached,
 # as a rigid lateral creepage v_y / V (the creepage in the patch lags it: the wheel and rail bend).
@@ -87,7 +89,7 @@ def track_springs(seats, sleepers, bodies):
     how the pad resists the seat's rotation, and the run starts with a transient (appends the
     sleepers to \p bodies)."""
     springs = []
-    series = PAD["vertical"] * BALLAST["vertical"] / (PAD["vertical"] + BALLAST["vertical"])
+    series = SEAT_VERTICAL
     # Two Kelvin elements in series, at frequencies well below kp / cp: each damper weighted by
     # the square of the other spring's share of the compliance.
     share = BALLAST["vertical"] / (PAD["vertical"] + BALLAST["vertical"])
@@ -184,7 +186,7 @@ def deck(case, p, sleepers=True):
     omega = SPEED / ROLLING_RADIUS
     arc = refined_arc(p)
     seats = sleeper_positions(p["rail_length"])
-    series = PAD["vertical"] * BALLAST["vertical"] / (PAD["vertical"] + BALLAST["vertical"])
+    series = SEAT_VERTICAL
     motion = lateral_motion(case, p)
     L = []
     L.append("<ParameterList name=\"railfe\">")
