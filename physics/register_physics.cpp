@@ -4,6 +4,7 @@
 #include "physics/contact_geometry/wheelset_on_track_module.hpp"
 #include "physics/contact_patch/contact_patch_module.hpp"
 #include "physics/explicit/explicit_module.hpp"
+#include "physics/implicit/implicit_module.hpp"
 #include "physics/materials/elastic_material.hpp"
 #include "physics/modal/modal_module.hpp"
 #include "physics/parts/rail_mesh.hpp"
@@ -18,6 +19,7 @@ void register_physics(ModuleRegistry& registry) {
   registry.add_module(statics_module());
   registry.add_module(modal_module());
   registry.add_module(explicit_module());
+  registry.add_module(implicit_module());
   registry.add_module(wheelset_on_track_module());
   registry.add_module(contact_patch_module());
   registry.add_mesh_generator(wheel_mesh_generator());

@@ -10,9 +10,9 @@
 
 namespace railfe {
 
-ParameterSpec linear_solver_parameters() {
+ParameterSpec linear_solver_parameters(const std::string& default_method) {
   ParameterSpec spec("How linear systems are solved.");
-  spec.choice("Method", "cg",
+  spec.choice("Method", default_method,
               {{"cg", "conjugate gradients (Belos), for symmetric positive definite systems"},
                {"gmres", "restarted GMRES (Belos), for any nonsingular system"},
                {"cholmod",

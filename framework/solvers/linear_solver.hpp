@@ -64,8 +64,9 @@ class LinearSolver {
   bool check_solutions_ = true;   ///< see check_solutions()
 };
 
-/// The valid parameters of a "Linear solver" sublist.
-ParameterSpec linear_solver_parameters();
+/// The valid parameters of a "Linear solver" sublist, with \p default_method as the Method
+/// when none is given (the implicit module factors once and defaults to "cholmod").
+ParameterSpec linear_solver_parameters(const std::string& default_method = "cg");
 
 /// Creates the solver a validated "Linear solver" sublist describes.
 std::unique_ptr<LinearSolver> create_linear_solver(const Teuchos::ParameterList& parameters);
