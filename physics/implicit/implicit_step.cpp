@@ -101,6 +101,28 @@ void initial_state(const ImplicitSettings& settings, Model& model, const DofMap&
   }
 }
 
+// Stops the run when the stored energy (kinetic + strain) exceeds ten times the largest energy
+// put in so far (initial energy and work of the loads). Unconditionally stable members of the
+// family cannot do that on a linear model, so this is a conditionally stable scheme (2β < γ)
+// above its stable step, whose results would grow without bound. (The created energy itself is
+// no test: the work of the loads is integrated by the trapezoidal rule, which only the
+// average-acceleration scheme matches exactly.)
+void check_energy_bounded(const ImplicitEnergy& energy, double largest_input, double time,
+                          const NewmarkScheme& scheme, const std::string& path) {
+  const double stored = energy.kinetic + energy.strain;
+  if (stored <= 10 * largest_input + 1e-12 && std::isfinite(stored))
+    return;
+  throw RunError(
+      path + ": the solution grows without bound: at t = " + CsvWriter::format(time) +
+      " s the stored energy is " + CsvWriter::format(stored) + " J against at most " +
+      CsvWriter::format(largest_input) + " J put in, so the integration is unstable" +
+      (2 * scheme.beta < scheme.gamma
+           ? " (Newmark with 2 Beta < Gamma is only conditionally stable: use HHT-alpha, Beta "
+             ">= Gamma/2, or a smaller Time step)"
+           : "") +
+      ". Rows up to the last step are kept.");
+}
+
 double dot_difference(const std::vector<double>& f0, const std::vector<double>& f1,
                       const std::vector<double>& u0, const std::vector<double>& u1) {
   double sum = 0;
@@ -184,6 +206,11 @@ void ImplicitStep::run(StepContext& context) {
                    "converge (%s); retrying with dt = %.6g s\n",
                    path.c_str(), cut.time, cut.failed_step, cut.reason.c_str(), cut.next_step);
   });
+  if (root && 2 * settings.scheme.beta < settings.scheme.gamma)
+    std::fprintf(stderr,
+                 "railfe: warning: %s: Newmark with Beta %.6g < Gamma/2 is only conditionally "
+                 "stable; the run stops (exit status 2) if the energy balance shows it diverging\n",
+                 path.c_str(), settings.scheme.beta);
   integrator.initialize(0.0, u.data(), v.data(), a.data());
 
   ImplicitRecorder recorder(settings, dofs, context.output, context.step_name,
@@ -219,7 +246,7 @@ void ImplicitStep::run(StepContext& context) {
 
   const long n_steps = static_cast<long>(std::ceil(settings.end_time / settings.time_step - 1e-9));
   Progress progress = context.progress("time stepping", static_cast<double>(n_steps));
-  double time = 0, largest_dissipation = 0;
+  double time = 0, largest_dissipation = 0, largest_input = energy.initial;
   std::size_t iterations_before = 0;
   int most_substeps = 1;
   Stopwatch stepping;
@@ -264,12 +291,13 @@ void ImplicitStep::run(StepContext& context) {
     const ImplicitState state{time, u.data(), v.data(), a.data()};
     recorder.sample(state, step % settings.history_interval == 0 || last);
     recorder.write_newton(step, time, dt, substeps, iterations, statistics.last_residuals);
-    if (step % settings.energy_interval == 0 || last) {
-      energy.kinetic = system.kinetic_energy(v.data());
-      energy.strain = system.strain_energy(u.data());
-      largest_dissipation = std::max(largest_dissipation, std::abs(energy.balance()));
+    energy.kinetic = system.kinetic_energy(v.data());
+    energy.strain = system.strain_energy(u.data());
+    largest_dissipation = std::max(largest_dissipation, std::abs(energy.balance()));
+    largest_input = std::max(largest_input, energy.initial + std::abs(energy.external_work));
+    check_energy_bounded(energy, largest_input, time, settings.scheme, path);
+    if (step % settings.energy_interval == 0 || last)
       recorder.write_energy(time, energy);
-    }
     recorder.snapshot(state, last);
     progress.update(static_cast<double>(step));
   }
