@@ -8,7 +8,7 @@
 #include "framework/output/csv_writer.hpp"
 #include "framework/output/exodus_writer.hpp"
 #include "framework/output/field_gather.hpp"
-#include "physics/explicit/explicit_output.hpp"
+#include "framework/output/history_events.hpp"
 
 namespace railfe {
 
