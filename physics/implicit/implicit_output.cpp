@@ -59,7 +59,7 @@ ImplicitRecorder::ImplicitRecorder(const ImplicitSettings& settings, const DofMa
                                               columns, root_);
   energy_file_ = std::make_unique<CsvWriter>(
       output.staging_path(step_name + "_energy.csv"),
-      std::vector<std::string>{"time_s", "kinetic_J", "strain_J", "external_work_J",
+      std::vector<std::string>{"time_s", "kinetic_J", "strain_J", "stored_J", "external_work_J",
                                "damping_work_J", "numerical_dissipation_J"},
       root_);
   newton_file_ = std::make_unique<CsvWriter>(
@@ -111,6 +111,7 @@ void ImplicitRecorder::write_energy(double time, const ImplicitEnergy& energy) {
   const std::vector<double> row{time,
                                 energy.kinetic,
                                 energy.strain,
+                                energy.kinetic + energy.strain,
                                 energy.external_work,
                                 energy.damping_work,
                                 energy.balance()};
