@@ -47,4 +47,25 @@ Vector6 ground_spring_internal_force(const SpringDamper& spring, const Vector6& 
   return to_global<6>(spring_local_force(spring, u, v), spring.axes);
 }
 
+Eigen::Vector3d spring_translational_force(const SpringDamper& spring,
+                                           const Eigen::Vector3d& stretch,
+                                           const Eigen::Vector3d& rate) {
+  const Eigen::Map<const Eigen::Vector3d> k(spring.stiffness.data()), c(spring.damping.data());
+  const Eigen::Vector3d local =
+      k.cwiseProduct(spring.axes * stretch) + c.cwiseProduct(spring.axes * rate);
+  return spring.axes.transpose() * local;
+}
+
+double spring_translational_energy(const SpringDamper& spring, const Eigen::Vector3d& stretch) {
+  const Eigen::Map<const Eigen::Vector3d> k(spring.stiffness.data());
+  const Eigen::Vector3d local = spring.axes * stretch;
+  return 0.5 * local.dot(k.cwiseProduct(local));
+}
+
+double spring_translational_power(const SpringDamper& spring, const Eigen::Vector3d& rate) {
+  const Eigen::Map<const Eigen::Vector3d> c(spring.damping.data());
+  const Eigen::Vector3d local = spring.axes * rate;
+  return local.dot(c.cwiseProduct(local));
+}
+
 }  // namespace railfe

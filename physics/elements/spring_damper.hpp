@@ -66,4 +66,16 @@ Vector12 spring_internal_force(const SpringDamper& spring, const Vector12& u, co
 Vector6 ground_spring_internal_force(const SpringDamper& spring, const Vector6& u,
                                      const Vector6& v);
 
+/// The force on end a of the translational part of \p spring (components 0–2 of its local
+/// frame) when end b has moved by \p stretch relative to a at \p rate: Rᵀ (k∘(R d) + c∘(R ḋ)),
+/// R = spring.axes. For springs between point-like ends (the explicit module's bodies and node
+/// sets), whose rotations carry no spring.
+Eigen::Vector3d spring_translational_force(const SpringDamper& spring,
+                                           const Eigen::Vector3d& stretch,
+                                           const Eigen::Vector3d& rate);
+/// The energy ½ (R d)ᵀ diag(k) (R d) stored by the translational part at \p stretch.
+double spring_translational_energy(const SpringDamper& spring, const Eigen::Vector3d& stretch);
+/// The power (R ḋ)ᵀ diag(c) (R ḋ) dissipated by the translational part at \p rate.
+double spring_translational_power(const SpringDamper& spring, const Eigen::Vector3d& rate);
+
 }  // namespace railfe

@@ -117,8 +117,6 @@ DiscreteParts::DiscreteParts(const ExplicitSettings& settings, const MeshPartiti
   for (const SpringSpec& spec : settings.springs) {
     Spring spring;
     spring.name = spec.name;
-    spring.stiffness = vector_of(spec.stiffness);
-    spring.damping = vector_of(spec.damping);
     auto make_end = [&](const std::string& name) {
       SpringEnd end;
       if (name == "ground")
@@ -149,10 +147,15 @@ DiscreteParts::DiscreteParts(const ExplicitSettings& settings, const MeshPartiti
         lightest = std::min(lightest, nodal_mass[node]);
       return comm.min(lightest);
     };
+    // A node-set end shares the spring equally among its nodes: each node gets its share.
     const double share = spring.a.share > 0 ? spring.a.share : 1.0;
+    for (int d = 0; d < 3; ++d) {
+      spring.element.stiffness[d] = share * spec.stiffness[d];
+      spring.element.damping[d] = share * spec.damping[d];
+    }
     const double inverse_mass = 1 / end_mass(spring.a) + 1 / end_mass(spring.b);
     for (int d = 0; d < 3; ++d) {
-      const double k = share * spring.stiffness[d], c = share * spring.damping[d];
+      const double k = spring.element.stiffness[d], c = spring.element.damping[d];
       if (k <= 0)
         continue;
       const double omega = std::sqrt(k * inverse_mass);
@@ -235,18 +238,14 @@ double DiscreteParts::add_spring_forces(const NodalArrays& nodes, double& energy
         u_b = bodies_[spring.b.body].displacement;
         v_b = bodies_[spring.b.body].velocity;
       }
-      const Eigen::Vector3d k = spring.a.share * spring.stiffness;
-      const Eigen::Vector3d c = spring.a.share * spring.damping;
       for (LocalIndex node : spring.a.nodes) {
-        Eigen::Vector3d force;
-        for (int d = 0; d < 3; ++d) {
-          const double stretch = u_b[d] - nodes.u[3 * node + d];
-          const double rate = v_b[d] - nodes.v[3 * node + d];
-          force[d] = k[d] * stretch + c[d] * rate;
+        const Eigen::Vector3d stretch = u_b - Eigen::Map<const Eigen::Vector3d>(&nodes.u[3 * node]);
+        const Eigen::Vector3d rate = v_b - Eigen::Map<const Eigen::Vector3d>(&nodes.v[3 * node]);
+        const Eigen::Vector3d force = spring_translational_force(spring.element, stretch, rate);
+        for (int d = 0; d < 3; ++d)
           nodes.residual[3 * node + d] += force[d];
-          energy += 0.5 * k[d] * stretch * stretch;
-          power += c[d] * rate * rate;
-        }
+        energy += spring_translational_energy(spring.element, stretch);
+        power += spring_translational_power(spring.element, rate);
         if (spring.b.body >= 0)
           bodies_[spring.b.body].force -= force;
       }
@@ -290,11 +289,10 @@ void DiscreteParts::correct(double time, double dt, const std::array<double, 3>&
         v_b = bodies_[spring.b.body].velocity;
       }
       const Eigen::Vector3d stretch = u_b - a.displacement, rate = v_b - a.velocity;
-      const Eigen::Vector3d force =
-          spring.stiffness.cwiseProduct(stretch) + spring.damping.cwiseProduct(rate);
+      const Eigen::Vector3d force = spring_translational_force(spring.element, stretch, rate);
       add_body_force(spring, force, spring.b.body >= 0);
-      body_spring_energy += 0.5 * stretch.dot(spring.stiffness.cwiseProduct(stretch));
-      body_spring_power += rate.dot(spring.damping.cwiseProduct(rate));
+      body_spring_energy += spring_translational_energy(spring.element, stretch);
+      body_spring_power += spring_translational_power(spring.element, rate);
     }
   }
   spring_energy_ = body_spring_energy;

@@ -17,6 +17,7 @@
 #include "framework/base/parallel.hpp"
 #include "framework/base/types.hpp"
 #include "framework/deck/expression.hpp"
+#include "physics/elements/spring_damper.hpp"
 #include "physics/explicit/explicit_settings.hpp"
 #include "physics/explicit/rigid_rotation.hpp"
 
@@ -122,8 +123,8 @@ class DiscreteParts {
   };
   struct Spring {
     std::string name;
-    SpringEnd a, b;  // b with body −1 and no nodes = ground
-    Eigen::Vector3d stiffness, damping;
+    SpringEnd a, b;        // b with body −1 and no nodes = ground
+    SpringDamper element;  // along the global axes; per node for a node-set end (shared)
   };
   void add_body_force(const Spring& spring, const Eigen::Vector3d& force_on_a, bool to_b);
 

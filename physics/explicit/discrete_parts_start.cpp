@@ -47,7 +47,8 @@ void DiscreteParts::start_from_preload(const NodalArrays& nodes,
     auto position = [&](int b) { return b >= 0 && !free(b) ? bodies_[b].displacement[d] : 0.0; };
     for (std::size_t s = 0; s < springs_.size(); ++s) {
       const Spring& spring = springs_[s];
-      const double k = spring.stiffness[d];
+      // The whole spring's stiffness (a node-set end's element holds one node's share).
+      const double k = spring.element.stiffness[d] / (spring.a.share > 0 ? spring.a.share : 1.0);
       const int a = spring.a.body, b = spring.b.body;
       if (spring.a.share > 0) {
         // A node set (share > 0 on every rank, even one that owns none of its nodes).
