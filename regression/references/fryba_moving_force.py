@@ -13,8 +13,9 @@ Usage:
   fryba_moving_force.py history --length L --ei EI --mass-per-length MU --force P --speed C
                                 [--modes N] [--points N] [--after S]   midspan history as CSV
   fryba_moving_force.py check CSV COLUMN --length ... (as history)  [--tolerance 0.01]
-      compares a railfe history column (time_s, deflection in m, positive along the force) with
-      the series: the peak within the tolerance and the history within tolerance × peak.
+      compares a railfe history column (time_s, deflection in m; --scale -1 when the force acts
+      along -z) with the series: the peak within the tolerance and the history within
+      tolerance × peak.
 """
 import argparse
 import math
@@ -80,6 +81,8 @@ def main():
     parser.add_argument("--points", type=int, default=4001)
     parser.add_argument("--after", type=float, default=1.0)
     parser.add_argument("--tolerance", type=float, default=0.01)
+    parser.add_argument("--scale", type=float, default=1.0,
+                        help="factor on the railfe column (-1 for a deflection along -z)")
     args = parser.parse_args()
     if args.mode == "amplification":
         print("alpha,daf_first_mode,daf_series")
@@ -98,7 +101,7 @@ def main():
     with open(args.csv) as f:
         rows = list(csv.DictReader(f))
     tc = np.array([float(r["time_s"]) for r in rows])
-    wc = np.array([float(r[args.column]) for r in rows])
+    wc = args.scale * np.array([float(r[args.column]) for r in rows])
     reference = np.interp(tc, t, w, right=np.nan)
     keep = ~np.isnan(reference)
     peak_ref, peak = w.max(), wc[keep].max()
