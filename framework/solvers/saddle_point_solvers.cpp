@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "framework/base/error.hpp"
+#include "framework/time/sparse_system.hpp"
 
 namespace railfe {
 
@@ -39,17 +40,22 @@ void BlockSaddlePointSolver::factor(const double* u, const double* v,
   const bool rows_moved = !rows.same_matrix(rows_) || rows.size() != rows_.size();
   const bool structure_changed = system_.structure_factorizations() != structure_version_;
   rows_ = rows;
+  bool vehicle_rows_moved = false;
   if (rows_moved) {  // C_sᵀ and C_vᵀ as dense columns
     structure_columns_.setZero(ns, nc);
-    vehicle_columns_.setZero(nv, nc);
+    Eigen::MatrixXd vehicle_columns = Eigen::MatrixXd::Zero(nv, nc);
     for (Eigen::Index i = 0; i < nc; ++i)
       for (std::size_t k = rows.offsets[i]; k < rows.offsets[i + 1]; ++k) {
         const Eigen::Index column = static_cast<Eigen::Index>(rows.columns[k]);
         if (column < ns)
           structure_columns_(column, i) += rows.values[k];
         else
-          vehicle_columns_(column - ns, i) += rows.values[k];
+          vehicle_columns(column - ns, i) += rows.values[k];
       }
+    vehicle_rows_moved =
+        vehicle_columns.cols() != vehicle_columns_.cols() || vehicle_columns != vehicle_columns_;
+    if (vehicle_rows_moved)
+      vehicle_columns_ = std::move(vehicle_columns);
   }
   if (rows_moved || structure_changed) {  // Z = A_s⁻¹ C_sᵀ, C_s Z
     z_.resize(ns, nc);
@@ -60,17 +66,16 @@ void BlockSaddlePointSolver::factor(const double* u, const double* v,
     ++statistics_.constraint_blocks;
     structure_version_ = system_.structure_factorizations();
   }
-  const Eigen::MatrixXd& vehicle = system_.vehicle().matrix();
-  const bool vehicle_changed =
-      vehicle.rows() != vehicle_matrix_.rows() || vehicle != vehicle_matrix_;
+  const bool vehicle_changed = system_.vehicle_versions() != vehicle_version_;
   if (vehicle_changed) {
-    vehicle_matrix_ = vehicle;
+    vehicle_version_ = system_.vehicle_versions();
+    vehicle_matrix_ = system_.vehicle().matrix();
     vehicle_lu_.compute(vehicle_matrix_);
     vehicle_regular_ = nv == 0 || vehicle_lu_.rcond() > 1e-12;
     vehicle_norm_ = nv == 0 ? 0.0 : vehicle_matrix_.cwiseAbs().rowwise().sum().maxCoeff();
   }
   if (vehicle_regular_) {  // S = C_s Z + C_v A_v⁻¹ C_vᵀ (n_c × n_c)
-    if (rows_moved || vehicle_changed) {
+    if (vehicle_rows_moved || vehicle_changed) {
       w_ = nv > 0 ? Eigen::MatrixXd(vehicle_lu_.solve(vehicle_columns_)) : Eigen::MatrixXd(0, nc);
       vehicle_schur_ = vehicle_columns_.transpose() * w_;
     }
@@ -182,11 +187,7 @@ void MonolithicSaddlePointSolver::factor(const double* u, const double* v,
   analyzed_ = true;
   if (lu_.info() != Eigen::Success)
     throw RunError("UMFPACK could not factor the saddle-point matrix of the time step (singular)");
-  Eigen::VectorXd row_sums = Eigen::VectorXd::Zero(matrix_.rows());
-  for (Eigen::Index j = 0; j < matrix_.outerSize(); ++j)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(matrix_, j); it; ++it)
-      row_sums[it.row()] += std::abs(it.value());
-  norm_infinity_ = row_sums.maxCoeff();
+  norm_infinity_ = infinity_norm(matrix_);
 }
 
 void MonolithicSaddlePointSolver::solve(const double* r, const double* r_c, double* x, double* mu) {

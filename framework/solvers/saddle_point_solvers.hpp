@@ -54,6 +54,7 @@ class BlockSaddlePointSolver : public SaddlePointSolver {
   Eigen::MatrixXd z_, w_;                                // A_s⁻¹ C_sᵀ, A_v⁻¹ C_vᵀ
   Eigen::MatrixXd structure_schur_, vehicle_schur_;      // C_s Z, C_v W
   Eigen::MatrixXd vehicle_matrix_;                       // A_v last factored
+  std::size_t vehicle_version_ = 0;                      // CoupledSystem::vehicle_versions() of it
   Eigen::PartialPivLU<Eigen::MatrixXd> vehicle_lu_;
   bool vehicle_regular_ = false;
   double vehicle_norm_ = 0;

@@ -29,17 +29,20 @@ void CoupledSystem::apply_rayleigh_stiffness(const double* x, double* y) {
 }
 
 void CoupledSystem::factor(const double* u, const double* v, const MatrixCoefficients& c) {
-  const MatrixCoefficients& old = structure_coefficients_;
-  const bool same = old.mass == c.mass && old.damping == c.damping &&
-                    old.stiffness == c.stiffness && old.rayleigh_stiffness == c.rayleigh_stiffness;
+  const bool same = same_coefficients(structure_coefficients_, c);
   if (!structure_factored_ || !structure_.is_linear() || !same) {
     structure_.factor(u, v, c);
     structure_coefficients_ = c;
     structure_factored_ = true;
     ++structure_factorizations_;
   }
-  vehicle_.form_matrix(u + n_structure_, v + n_structure_, c);
-  vehicle_lu_valid_ = false;
+  const bool vehicle_same = same_coefficients(vehicle_coefficients_, c);
+  if (vehicle_versions_ == 0 || !vehicle_.is_linear() || !vehicle_same) {
+    vehicle_.form_matrix(u + n_structure_, v + n_structure_, c);
+    vehicle_coefficients_ = c;
+    ++vehicle_versions_;
+    vehicle_lu_valid_ = false;
+  }
 }
 
 void CoupledSystem::solve(const double* rhs, double* x) {

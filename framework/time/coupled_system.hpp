@@ -31,7 +31,8 @@ class CoupledSystem : public SecondOrderSystem {
   /// Both parts' K_R x.
   void apply_rayleigh_stiffness(const double* x, double* y) override;
   /// Factors the structure when it is nonlinear, not yet factored or factored with other
-  /// coefficients; forms the vehicle's matrix (DenseSecondOrderSystem::form_matrix()).
+  /// coefficients; forms the vehicle's matrix (DenseSecondOrderSystem::form_matrix()) on the
+  /// same terms.
   void factor(const double* u, const double* v, const MatrixCoefficients& coefficients) override;
   /// Block-diagonal solve (the vehicle's matrix LU-factored on first use after factor()).
   void solve(const double* rhs, double* x) override;
@@ -48,6 +49,8 @@ class CoupledSystem : public SecondOrderSystem {
   DenseSecondOrderSystem& vehicle() { return vehicle_; }
   /// Number of structure factorizations so far (changes whenever the structure's A does).
   std::size_t structure_factorizations() const { return structure_factorizations_; }
+  /// Number of times the vehicle's matrix was formed (changes whenever A_v does).
+  std::size_t vehicle_versions() const { return vehicle_versions_; }
 
  private:
   SecondOrderSystem& structure_;
@@ -55,7 +58,8 @@ class CoupledSystem : public SecondOrderSystem {
   std::size_t n_structure_, n_vehicle_;
   std::size_t structure_factorizations_ = 0;
   bool structure_factored_ = false;
-  MatrixCoefficients structure_coefficients_;
+  MatrixCoefficients structure_coefficients_, vehicle_coefficients_;
+  std::size_t vehicle_versions_ = 0;
   bool vehicle_lu_valid_ = false;
   Eigen::PartialPivLU<Eigen::MatrixXd> vehicle_lu_;
 };

@@ -9,11 +9,6 @@
 namespace railfe {
 namespace {
 
-bool same_coefficients(const MatrixCoefficients& a, const MatrixCoefficients& b) {
-  return a.mass == b.mass && a.damping == b.damping && a.stiffness == b.stiffness &&
-         a.rayleigh_stiffness == b.rayleigh_stiffness;
-}
-
 std::string residual_list(const std::vector<double>& residuals) {
   std::string text;
   char number[32];

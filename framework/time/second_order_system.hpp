@@ -23,6 +23,12 @@ struct MatrixCoefficients {
       0;  ///< coefficient of K_R (zero without stiffness-proportional damping)
 };
 
+/// Whether \p a and \p b are the same coefficients (a factorization made for one serves both).
+inline bool same_coefficients(const MatrixCoefficients& a, const MatrixCoefficients& b) {
+  return a.mass == b.mass && a.damping == b.damping && a.stiffness == b.stiffness &&
+         a.rayleigh_stiffness == b.rayleigh_stiffness;
+}
+
 /// One entry of a sparse matrix, for solvers that assemble the whole saddle-point matrix.
 struct MatrixEntry {
   std::size_t row = 0;     ///< row (unknown index)

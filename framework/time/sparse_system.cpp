@@ -10,6 +10,14 @@ namespace railfe {
 using Vector = Eigen::Map<Eigen::VectorXd>;
 using ConstVector = Eigen::Map<const Eigen::VectorXd>;
 
+double infinity_norm(const Eigen::SparseMatrix<double>& matrix) {
+  Eigen::VectorXd row_sums = Eigen::VectorXd::Zero(matrix.rows());
+  for (Eigen::Index j = 0; j < matrix.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(matrix, j); it; ++it)
+      row_sums[it.row()] += std::abs(it.value());
+  return matrix.rows() > 0 ? row_sums.maxCoeff() : 0.0;
+}
+
 SparseLinearSystem::SparseLinearSystem(Matrix mass, Matrix damping, Matrix stiffness,
                                        std::function<void(double, double*)> load,
                                        double backward_error_limit)
@@ -54,11 +62,7 @@ void SparseLinearSystem::factor(const double*, const double*, const MatrixCoeffi
   }
   if (cholesky_.info() != Eigen::Success)
     throw RunError("CHOLMOD could not factor the structure's matrix (not positive definite)");
-  Eigen::VectorXd row_sums = Eigen::VectorXd::Zero(matrix_.rows());
-  for (Eigen::Index j = 0; j < matrix_.outerSize(); ++j)
-    for (Matrix::InnerIterator it(matrix_, j); it; ++it)
-      row_sums[it.row()] += std::abs(it.value());
-  norm_infinity_ = row_sums.maxCoeff();
+  norm_infinity_ = infinity_norm(matrix_);
 }
 
 void SparseLinearSystem::check(const Eigen::MatrixXd& b, const Eigen::MatrixXd& x) const {

@@ -14,6 +14,9 @@
 
 namespace railfe {
 
+/// ‖A‖∞, the largest absolute row sum of \p matrix.
+double infinity_norm(const Eigen::SparseMatrix<double>& matrix);
+
 /// A linear sparse second-order system; K is also the Rayleigh stiffness K_R.
 class SparseLinearSystem : public SecondOrderSystem {
  public:

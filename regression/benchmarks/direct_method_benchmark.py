@@ -6,8 +6,9 @@ through the Schur complement) against the monolithic one (the whole saddle-point
 UMFPACK every step). The configurations run interleaved, best of --repeat; wall and CPU time per
 step and per Newton iteration go to docs/data/direct_method_benchmark.csv.
 Usage: direct_method_benchmark.py [--exe build/bin/railfe-moving-study] [--repeat 2]
-       [--monolithic-steps-large 100] (the monolithic 10^5 run is long: fewer steps, per-step
-       figures; say so when quoting it)."""
+       [--monolithic-steps-large 100] [--repeat-large 1] (the monolithic 10^5 run takes about
+       0.7 s a step on one core: by default 100 steps and per-step figures; say so when quoting
+       them)."""
 import argparse
 import csv
 import os
@@ -31,12 +32,13 @@ def main():
     parser.add_argument("--exe", default=os.path.join(ROOT, "build/bin/railfe-moving-study"))
     parser.add_argument("--repeat", type=int, default=2)
     parser.add_argument("--steps", type=int, default=1000)
-    parser.add_argument("--monolithic-steps-large", type=int, default=1000)
+    parser.add_argument("--monolithic-steps-large", type=int, default=100)
+    parser.add_argument("--repeat-large", type=int, default=1)
     a = parser.parse_args()
     rows = []
     for label, lines, elements in BRIDGES:
         best = {}
-        for _ in range(a.repeat):
+        for _ in range(a.repeat if label == "1e4" else a.repeat_large):
             for solver in ("block", "monolithic"):
                 steps = a.steps
                 if solver == "monolithic" and label == "1e5":
