@@ -130,6 +130,27 @@ void BlockSaddlePointSolver::solve(const double* r, const double* r_c, double* x
   error = std::max(error,
                    check_backward_error(rhs_ - reduced_ * solution_, reduced_norm_, solution_, rhs_,
                                         limit_, "block saddle-point solve (reduced system)"));
+  // The structure's equations A_s x_s + C_sᵀ μ = r_s end to end, where the structure can
+  // apply A_s (this also checks Z, which the constraint check below cannot see).
+  product_.resize(ns);
+  if (system_.structure().apply_matrix(x, product_.data())) {
+    const Eigen::VectorXd constraint_force = structure_columns_ * multipliers;
+    const double scale = product_.lpNorm<Eigen::Infinity>() +
+                         constraint_force.lpNorm<Eigen::Infinity>() +
+                         rs.head(ns).lpNorm<Eigen::Infinity>();
+    const double structure_error =
+        scale > 0 ? (rs.head(ns) - product_ - constraint_force).lpNorm<Eigen::Infinity>() / scale
+                  : 0.0;
+    if (!(structure_error <= limit_)) {
+      char text[160];
+      std::snprintf(text, sizeof text,
+                    "block saddle-point solve (structure equations): the solution failed its "
+                    "check (backward error %.3e > %.1e)",
+                    structure_error, limit_);
+      throw RunError(text);
+    }
+    error = std::max(error, structure_error);
+  }
   // The constraint equations C x = r_c, which the structure's own check does not see.
   cx_.resize(nc);
   rows_.multiply(x, cx_.data());

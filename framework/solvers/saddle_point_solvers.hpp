@@ -39,8 +39,10 @@ class BlockSaddlePointSolver : public SaddlePointSolver {
   /// C_s Z when the rows or A_s changed, and LU-factors the bordered vehicle block.
   void factor(const double* u, const double* v, const MatrixCoefficients& coefficients,
               const ConstraintRows& rows) override;
-  /// One structure solve and one small dense solve; the bordered system's backward error and
-  /// the constraint equations C x = r_c are checked (the structure's solver checks its own).
+  /// One structure solve and one vehicle solve. Checked: the reduced system's backward error,
+  /// the vehicle equations, C x = r_c, and where the structure can apply A_s
+  /// (SecondOrderSystem::apply_matrix) its equations A_s x_s + C_sᵀ μ = r_s end to end, so the
+  /// structure's own per-solve check may be turned off.
   void solve(const double* r, const double* r_c, double* x, double* mu) override;
   /// The counters so far.
   const SaddlePointStatistics& statistics() const { return statistics_; }
@@ -61,7 +63,7 @@ class BlockSaddlePointSolver : public SaddlePointSolver {
   Eigen::MatrixXd reduced_;  // S, or the bordered matrix where A_v is singular
   Eigen::PartialPivLU<Eigen::MatrixXd> reduced_lu_;
   double reduced_norm_ = 0;
-  Eigen::VectorXd y_, rhs_, solution_, cx_;
+  Eigen::VectorXd y_, rhs_, solution_, cx_, product_;
   SaddlePointStatistics statistics_;
 };
 

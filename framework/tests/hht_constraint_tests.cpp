@@ -163,5 +163,49 @@ TEST(HhtConstraints, BlockAndMonolithicSolversAgree) {
   }
 }
 
+// A structure whose block solves are off by 1e-6 (its own check turned off, as the block solver
+// permits): the block solver's end-to-end check of the structure equations refuses the step.
+TEST(HhtConstraints, BlockSolverCatchesAWrongStructureSolve) {
+  class Sloppy : public SparseLinearSystem {
+   public:
+    using SparseLinearSystem::SparseLinearSystem;
+    void solve_columns(const double* rhs, std::size_t n_columns, double* x) override {
+      SparseLinearSystem::solve_columns(rhs, n_columns, x);
+      if (n_columns > 1)
+        for (std::size_t i = 0; i < n_columns * n_unknowns(); ++i)
+          x[i] *= 1 + 1e-6;
+    }
+  };
+  SparseLinearSystem::Matrix mass(2, 2), stiffness(2, 2);
+  mass.setIdentity();
+  stiffness.setIdentity();
+  stiffness *= 100.0;
+  Sloppy structure(mass, {}, stiffness);
+  structure.check_solutions(false);
+  LinearDenseSystem vehicle(scalar(1), scalar(0), scalar(50));
+  CoupledSystem coupled(structure, vehicle);
+  class TwoRows : public ConstraintSet {
+   public:
+    void rows_at(double, ConstraintRows& rows) override {
+      for (std::size_t i = 0; i < 2; ++i) {
+        rows.start_row(0.01);
+        rows.add_entry(2, 1.0);
+        rows.add_entry(i, -1.0 - static_cast<double>(i));
+      }
+    }
+  } rows;
+  BlockSaddlePointSolver block(coupled);
+  HhtIntegrator integrator(NewmarkScheme::hht(0), coupled);
+  integrator.constrain(rows, block);
+  std::vector<double> u(3, 0.0), v(3, 0.0), a(3, 0.0);
+  integrator.initialize(0, u.data(), v.data(), a.data());  // at rest: μ = 0, nothing to see
+  try {
+    integrator.advance(0, 1e-3, u.data(), v.data(), a.data());  // g = 0.01 pulls: μ ≠ 0
+    FAIL() << "expected the end-to-end check to fail";
+  } catch (const RunError& e) {
+    EXPECT_NE(std::string(e.what()).find("structure equations"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace railfe

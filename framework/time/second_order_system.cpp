@@ -15,6 +15,10 @@ void SecondOrderSystem::solve_columns(const double* rhs, std::size_t n_columns, 
     solve(rhs + j * n, x + j * n);
 }
 
+bool SecondOrderSystem::apply_matrix(const double*, double*) {
+  return false;
+}
+
 void SecondOrderSystem::matrix_entries(std::vector<MatrixEntry>&) const {
   throw std::logic_error("a monolithic saddle-point solve needs the system's matrix_entries()");
 }

@@ -68,6 +68,9 @@ class SecondOrderSystem {
   /// length n_unknowns()). The default calls solve() per column; a system whose linear solver
   /// passes over its factor once for a block (LinearSolver::solve_block) overrides it.
   virtual void solve_columns(const double* rhs, std::size_t n_columns, double* x);
+  /// y = A x with the A of the last factor() call, for solvers that check a coupled solution
+  /// end to end. Returns false (the default) when the system cannot.
+  virtual bool apply_matrix(const double* x, double* y);
   /// Appends the entries of the A of the last factor() call to \p entries (for a monolithic
   /// saddle-point solve). The default throws std::logic_error.
   virtual void matrix_entries(std::vector<MatrixEntry>& entries) const;

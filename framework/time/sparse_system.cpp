@@ -90,7 +90,13 @@ void SparseLinearSystem::solve_columns(const double* rhs, std::size_t n_columns,
   const Eigen::Map<const Eigen::MatrixXd> b(rhs, n, m);
   Eigen::Map<Eigen::MatrixXd> solution(x, n, m);
   solution = cholesky_.solve(Eigen::MatrixXd(b));
-  check(b, solution);
+  if (check_)
+    check(b, solution);
+}
+
+bool SparseLinearSystem::apply_matrix(const double* x, double* y) {
+  Vector(y, matrix_.rows()) = matrix_ * ConstVector(x, matrix_.rows());
+  return true;
 }
 
 void SparseLinearSystem::matrix_entries(std::vector<MatrixEntry>& entries) const {

@@ -49,6 +49,11 @@ class SparseLinearSystem : public SecondOrderSystem {
   void solve_columns(const double* rhs, std::size_t n_columns, double* x) override;
   /// The entries of A.
   void matrix_entries(std::vector<MatrixEntry>& entries) const override;
+  /// y = A x.
+  bool apply_matrix(const double* x, double* y) override;
+  /// Whether every solve checks its backward error (default true). A block solver that checks
+  /// the coupled solution against apply_matrix() may turn it off.
+  void check_solutions(bool check) { check_ = check; }
 
  private:
   void check(const Eigen::MatrixXd& b, const Eigen::MatrixXd& x) const;
@@ -57,7 +62,8 @@ class SparseLinearSystem : public SecondOrderSystem {
   std::function<void(double, double*)> load_;
   double limit_;
   double norm_infinity_ = 0;  ///< ‖A‖∞ of the last factor()
-  bool analyzed_ = false;     ///< whether CHOLMOD has ordered A's pattern
+  bool analyzed_ = false;
+  bool check_ = true;  ///< whether CHOLMOD has ordered A's pattern
   Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower> cholesky_;
 };
 

@@ -98,9 +98,10 @@ CrossingResult run_crossing(const CrossingSettings& s) {
       [f = model.force](double, double* out) { Eigen::Map<Eigen::VectorXd>(out, f.size()) = f; });
   CoupledSystem coupled(structure, vehicle);
   std::unique_ptr<SaddlePointSolver> saddle;
-  if (s.solver == "block")
+  if (s.solver == "block") {
     saddle = std::make_unique<BlockSaddlePointSolver>(coupled);
-  else if (s.solver == "monolithic")
+    structure.check_solutions(false);  // the block solver checks the coupled solution instead
+  } else if (s.solver == "monolithic")
     saddle = std::make_unique<MonolithicSaddlePointSolver>(coupled);
   else
     throw RunError("solver '" + s.solver + "': expected block or monolithic");
