@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 
 #include "framework/base/error.hpp"
 #include "physics/elements/beam_interpolation.hpp"
@@ -121,6 +123,54 @@ TEST(MovingContacts, SeparationOverABumpIsReported) {
     EXPECT_GE(f, 0.0);
   s.bump_height = 0;
   EXPECT_TRUE(run_crossing(s).events.empty());
+}
+
+// Irregularities from a CSV file (linear between rows) on the right-hand side of a vertical and
+// a lateral row, both released together; a file that does not cover s, or a bad file, is named.
+TEST(MovingContacts, IrregularityFromCsvFeedsVerticalAndLateralRows) {
+  const std::string path = testing::TempDir() + "railfe_irregularity.csv";
+  {
+    std::ofstream file(path);
+    file << "s,vertical,lateral\n0,0,0\n2,0.004,-0.002\n4,0,0\n";
+  }
+  const Irregularity surface = Irregularity::from_csv(path);
+  EXPECT_DOUBLE_EQ(surface.vertical(1.0), 0.002);
+  EXPECT_DOUBLE_EQ(surface.lateral(3.0), -0.001);
+  EXPECT_THROW(surface.vertical(4.5), RunError);
+  BeamSection section{1.0, 1.0, 1.0, 2.0, INFINITY, INFINITY};
+  const BeamElement beam(Eigen::Vector3d::Zero(), Eigen::Vector3d(4, 0, 0),
+                         Eigen::Vector3d(0, 0, 1), isotropic_beam_material(2e11, 0.3, 7850),
+                         section);
+  std::array<long, 12> unknowns;
+  for (int k = 0; k < 12; ++k)
+    unknowns[k] = k;
+  MovingContacts contacts(BeamPath({{beam, unknowns}}),
+                          {{"wheel", 13, 12, 0.5, 1.0, surface, true}});
+  ConstraintRows rows;
+  contacts.rows_at(0.5, rows);  // s = 1 m
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_DOUBLE_EQ(rows.rhs[0], 0.002);   // vertical
+  EXPECT_DOUBLE_EQ(rows.rhs[1], -0.001);  // lateral
+  // Row 0: u_13 − N_z u_e; the vertical beam DOFs at s = 1 m (ξ = 1/4): u_z,a weight 27/32.
+  EXPECT_EQ(rows.columns[rows.offsets[0]], 13u);
+  double weight = 0;
+  for (std::size_t k = rows.offsets[0]; k < rows.offsets[1]; ++k)
+    if (rows.columns[k] == 2)
+      weight = -rows.values[k];
+  EXPECT_NEAR(weight, 27.0 / 32.0, 1e-14);  // Hermite 1 − 3ξ² + 2ξ³
+  const double pulling[2] = {1.0, 0.0};
+  std::vector<double> u(14, 0.0);
+  EXPECT_TRUE(contacts.accept(0.5, u.data(), pulling));
+  rows.clear();
+  contacts.rows_at(0.6, rows);
+  EXPECT_EQ(rows.size(), 0u);  // both rows released
+  std::remove(path.c_str());
+  try {
+    Irregularity::from_csv(path);
+    FAIL() << "expected a RunError";
+  } catch (const RunError& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos);
+  }
 }
 
 // A vehicle that runs past the end of the bridge is refused with the time and the place.
