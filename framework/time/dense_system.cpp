@@ -21,22 +21,34 @@ void DenseSecondOrderSystem::apply_rayleigh_stiffness(const double* x, double* y
   Vector(y, mass_.rows()) = rayleigh_ * ConstVector(x, mass_.rows());
 }
 
-void DenseSecondOrderSystem::factor(const double* u, const double* v, const MatrixCoefficients& c) {
+void DenseSecondOrderSystem::form_matrix(const double* u, const double* v,
+                                         const MatrixCoefficients& c) {
   const Eigen::Index n = mass_.rows();
   tangent_stiffness_.setZero(n, n);
   tangent_damping_.setZero(n, n);
   tangent(u, v, tangent_stiffness_, tangent_damping_);
-  Eigen::MatrixXd a =
-      c.mass * mass_ + c.damping * tangent_damping_ + c.stiffness * tangent_stiffness_;
+  matrix_ = c.mass * mass_ + c.damping * tangent_damping_ + c.stiffness * tangent_stiffness_;
   if (c.rayleigh_stiffness != 0)
-    a += c.rayleigh_stiffness * rayleigh_;
-  lu_.compute(a);
+    matrix_ += c.rayleigh_stiffness * rayleigh_;
+}
+
+void DenseSecondOrderSystem::factor(const double* u, const double* v, const MatrixCoefficients& c) {
+  form_matrix(u, v, c);
+  lu_.compute(matrix_);
   if (!(lu_.rcond() > std::numeric_limits<double>::epsilon()))
     throw RunError("the effective matrix of the time step is singular");
 }
 
 void DenseSecondOrderSystem::solve(const double* rhs, double* x) {
   Vector(x, mass_.rows()) = lu_.solve(ConstVector(rhs, mass_.rows()));
+}
+
+void DenseSecondOrderSystem::matrix_entries(std::vector<MatrixEntry>& entries) const {
+  for (Eigen::Index j = 0; j < matrix_.cols(); ++j)
+    for (Eigen::Index i = 0; i < matrix_.rows(); ++i)
+      if (matrix_(i, j) != 0)
+        entries.push_back(
+            {static_cast<std::size_t>(i), static_cast<std::size_t>(j), matrix_(i, j)});
 }
 
 LinearDenseSystem::LinearDenseSystem(Eigen::MatrixXd mass, Eigen::MatrixXd damping,

@@ -25,11 +25,18 @@ class DenseSecondOrderSystem : public SecondOrderSystem {
   void apply_mass(const double* x, double* y) override;
   /// y = K_R x with the matrix given to set_rayleigh_stiffness().
   void apply_rayleigh_stiffness(const double* x, double* y) override;
-  /// Forms A from M, tangent() at (u, v) and K_R, and LU-factors it; throws RunError when A is
-  /// singular to working precision.
+  /// Forms A from M, tangent() at (u, v) and K_R without factoring it (matrix() then holds it):
+  /// for block solvers that border A with constraint rows, where A alone may be singular.
+  void form_matrix(const double* u, const double* v, const MatrixCoefficients& coefficients);
+  /// Forms A (form_matrix()) and LU-factors it; throws RunError when A is singular to working
+  /// precision.
   void factor(const double* u, const double* v, const MatrixCoefficients& coefficients) override;
   /// x = A⁻¹ rhs.
   void solve(const double* rhs, double* x) override;
+  /// The nonzero entries of the A of the last factor().
+  void matrix_entries(std::vector<MatrixEntry>& entries) const override;
+  /// The A of the last factor() call (n × n).
+  const Eigen::MatrixXd& matrix() const { return matrix_; }
 
   /// Writes K_t = ∂f_int/∂u and C_t = ∂f_int/∂v at (u, v); both come in sized n × n.
   virtual void tangent(const double* u, const double* v, Eigen::MatrixXd& stiffness,
@@ -40,7 +47,7 @@ class DenseSecondOrderSystem : public SecondOrderSystem {
   const Eigen::MatrixXd& mass() const { return mass_; }
 
  private:
-  Eigen::MatrixXd mass_, rayleigh_, tangent_stiffness_, tangent_damping_;
+  Eigen::MatrixXd mass_, rayleigh_, tangent_stiffness_, tangent_damping_, matrix_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
 };
 

@@ -47,6 +47,16 @@ class HhtIntegrator {
   /// dt / 2^max_halvings fails; u, v, a then hold the last converged state.
   int advance(double time, double dt, double* u, double* v, double* a);
 
+  /// Holds the unknowns to \p constraints, each Newton iteration solved by \p solver (neither
+  /// owned); see NewtonStepSolver::constrain(). Call before initialize().
+  void constrain(ConstraintSet& constraints, SaddlePointSolver& solver) {
+    solver_.constrain(&constraints, &solver);
+  }
+  /// λ_{n+1} of the last converged step, one per row of constraint_rows().
+  const std::vector<double>& multipliers() const { return solver_.multipliers(); }
+  /// The constraint rows of the last converged step.
+  const ConstraintRows& constraint_rows() const { return solver_.constraint_rows(); }
+
   /// Calls \p report at every cut-back (a module writes it to its log).
   void on_cut_back(std::function<void(const CutBack&)> report) { report_ = std::move(report); }
   /// Cut-backs so far.

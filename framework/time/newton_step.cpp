@@ -4,14 +4,10 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <stdexcept>
 
 namespace railfe {
 namespace {
-
-bool same_coefficients(const MatrixCoefficients& a, const MatrixCoefficients& b) {
-  return a.mass == b.mass && a.damping == b.damping && a.stiffness == b.stiffness &&
-         a.rayleigh_stiffness == b.rayleigh_stiffness;
-}
 
 std::string residual_list(const std::vector<double>& residuals) {
   std::string text;
@@ -53,6 +49,16 @@ double NewtonStepSolver::norm(const std::vector<double>& x) const {
   return std::sqrt(system_.dot(x.data(), x.data()));
 }
 
+void NewtonStepSolver::constrain(ConstraintSet* constraints, SaddlePointSolver* solver) {
+  if ((constraints == nullptr) != (solver == nullptr))
+    throw std::logic_error("NewtonStepSolver::constrain needs both a constraint set and a solver");
+  constraints_ = constraints;
+  saddle_ = solver;
+  rows_old_.clear();
+  lambda_old_.clear();
+  linear_factor_valid_ = false;
+}
+
 void NewtonStepSolver::initial_acceleration(double time, const double* u, const double* v,
                                             double* a) {
   const std::size_t n = u_.size();
@@ -60,22 +66,73 @@ void NewtonStepSolver::initial_acceleration(double time, const double* u, const 
   balance_force(u, v, force_.data());
   for (std::size_t i = 0; i < n; ++i)
     residual_[i] -= force_[i];
-  system_.factor(u, v, {1.0, 0.0, 0.0, 0.0});
   ++statistics_.factorizations;
   linear_factor_valid_ = false;
-  system_.solve(residual_.data(), a);
+  if (constraints_ != nullptr) {
+    // [M Cᵀ; C 0] [a; λ] = [f − g; 0]: the constraint's acceleration terms (C̈ u + 2 Ċ v, g̈)
+    // are taken as zero, exact for a structure at rest under a flat path.
+    rows_old_.clear();
+    constraints_->rows_at(time, rows_old_);
+    constraint_residual_.assign(rows_old_.size(), 0.0);
+    lambda_old_.assign(rows_old_.size(), 0.0);
+    saddle_->factor(u, v, {1.0, 0.0, 0.0, 0.0}, rows_old_);
+    saddle_->solve(residual_.data(), constraint_residual_.data(), a, lambda_old_.data());
+  } else {
+    system_.factor(u, v, {1.0, 0.0, 0.0, 0.0});
+    system_.solve(residual_.data(), a);
+  }
   cached_u_.assign(u, u + n);
   cached_v_.assign(v, v + n);
   cached_force_ = force_;
 }
 
+void NewtonStepSolver::fail(const StepState& state, const std::string& failure) const {
+  const double time_old = state.time_next - state.dt;
+  char where[128];
+  std::snprintf(where, sizeof where, "HHT-alpha step from t = %.9g s (dt = %.6g s): ", time_old,
+                state.dt);
+  const std::vector<double>& residuals = statistics_.last_residuals;
+  throw StepNotConverged(
+      std::string(where) + failure + "; residual norms " + residual_list(residuals), time_old,
+      state.dt, residuals);
+}
+
 void NewtonStepSolver::solve_for_acceleration(const StepState& state, double* a) {
+  if (constraints_ == nullptr) {
+    iterate(state, a);
+  } else {
+    if (state.scheme->beta == 0)
+      throw std::logic_error("constraints need an implicit scheme (beta > 0)");
+    // A constraint that releases or engages at t_{n+1} repeats the step with the new rows.
+    const int most_changes = 8;
+    for (int change = 0;; ++change) {
+      rows_next_.clear();
+      constraints_->rows_at(state.time_next, rows_next_);
+      iterate(state, a);
+      if (!constraints_->accept(state.time_next, u_.data(), lambda_.data()))
+        break;
+      if (change == most_changes)
+        fail(state, "the constraints kept releasing and engaging (" + std::to_string(most_changes) +
+                        " changes in one step)");
+    }
+    rows_old_ = rows_next_;
+    lambda_old_ = lambda_;
+  }
+  const int iterations = statistics_.last_iterations;
+  ++statistics_.steps;
+  statistics_.iterations += static_cast<std::size_t>(iterations);
+  statistics_.most_iterations = std::max(statistics_.most_iterations, iterations);
+}
+
+void NewtonStepSolver::iterate(const StepState& state, double* a) {
   const NewmarkScheme& scheme = *state.scheme;
   const double alpha = scheme.alpha, beta = scheme.beta, gamma = scheme.gamma, dt = state.dt;
   const double weight = 1 + alpha, time_old = state.time_next - dt;
   const std::size_t n = u_.size();
+  const bool constrained = constraints_ != nullptr;
+  const std::size_t nc = constrained ? rows_next_.size() : 0;
 
-  // The part of R that does not depend on a_{n+1}.
+  // The part of R that does not depend on a_{n+1} (or λ_{n+1}).
   system_.external_force(state.time_next, fixed_.data());
   for (std::size_t i = 0; i < n; ++i)
     fixed_[i] *= -weight;
@@ -89,6 +146,17 @@ void NewtonStepSolver::solve_for_acceleration(const StepState& state, double* a)
     const double* old_force = cached ? cached_force_.data() : force_.data();
     for (std::size_t i = 0; i < n; ++i)
       fixed_[i] += alpha * (residual_[i] - old_force[i]);
+    if (constrained && lambda_old_.size() == rows_old_.size())
+      rows_old_.add_transpose(lambda_old_.data(), -alpha, fixed_.data());
+  }
+  if (constrained) {
+    if (lambda_old_.size() == nc)
+      lambda_ = lambda_old_;
+    else
+      lambda_.assign(nc, 0.0);
+    constraint_residual_.resize(nc);
+    mu_.resize(nc);
+    constraint_force_.resize(n);
   }
 
   const MatrixCoefficients coefficients{1 + weight * gamma * dt * rayleigh_.mass,
@@ -108,57 +176,75 @@ void NewtonStepSolver::solve_for_acceleration(const StepState& state, double* a)
     system_.apply_mass(a, mass_a_.data());
     for (std::size_t i = 0; i < n; ++i)
       residual_[i] = mass_a_[i] + weight * force_[i] + fixed_[i];
+    double constraint_error = 0;
+    if (constrained) {
+      std::fill(constraint_force_.begin(), constraint_force_.end(), 0.0);
+      rows_next_.add_transpose(lambda_.data(), weight, constraint_force_.data());
+      for (std::size_t i = 0; i < n; ++i)
+        residual_[i] += constraint_force_[i];
+      rows_next_.multiply(u_.data(), constraint_residual_.data());
+      for (std::size_t i = 0; i < nc; ++i) {
+        constraint_residual_[i] -= rows_next_.rhs[i];
+        constraint_error = std::max(constraint_error, std::abs(constraint_residual_[i]));
+      }
+    }
     const double residual = norm(residual_);
     residuals.push_back(residual);
 
     std::string failure;
-    if (!std::isfinite(residual)) {
+    if (!std::isfinite(residual) || !std::isfinite(constraint_error)) {
       failure = "met a non-finite residual";
     } else if (iteration > 0) {
-      const double scale = std::max({norm(mass_a_), weight * norm(force_), norm(fixed_)});
+      double scale = std::max({norm(mass_a_), weight * norm(force_), norm(fixed_)});
+      if (constrained)
+        scale = std::max(scale, norm(constraint_force_));
       for (std::size_t i = 0; i < n; ++i)
         scratch_[i] = u_[i] - state.u_old[i];
+      const double displacement_floor =
+          std::max(settings_.increment_relative * norm(scratch_), settings_.increment_absolute);
       const bool converged =
           residual <= std::max(settings_.residual_relative * scale, settings_.residual_absolute) &&
-          increment <=
-              std::max(settings_.increment_relative * norm(scratch_), settings_.increment_absolute);
+          increment <= displacement_floor && constraint_error <= displacement_floor;
       if (converged) {
         cached_u_ = u_;
         cached_v_ = v_;
         cached_force_ = force_;
-        ++statistics_.steps;
-        statistics_.iterations += iteration;
         statistics_.last_iterations = iteration;
-        statistics_.most_iterations = std::max(statistics_.most_iterations, iteration);
         return;
       }
       if (iteration == settings_.max_iterations)
         failure = "did not converge in " + std::to_string(iteration) + " iterations";
     }
-    if (!failure.empty()) {
-      char where[128];
-      std::snprintf(where, sizeof where, "HHT-alpha step from t = %.9g s (dt = %.6g s): ", time_old,
-                    dt);
-      throw StepNotConverged(std::string(where) + "Newton iteration " + failure +
-                                 "; residual norms " + residual_list(residuals),
-                             time_old, dt, residuals);
-    }
+    if (!failure.empty())
+      fail(state, "Newton iteration " + failure);
 
-    if (!linear || !linear_factor_valid_ || !same_coefficients(coefficients, factored_)) {
-      system_.factor(u_.data(), v_.data(), coefficients);
-      ++statistics_.factorizations;
-      factored_ = coefficients;
-      linear_factor_valid_ = linear;
+    if (constrained) {
+      if (!linear || iteration == 0) {
+        saddle_->factor(u_.data(), v_.data(), coefficients, rows_next_);
+        ++statistics_.factorizations;
+      }
+      // [A Cᵀ; C 0] [c; μ] = [R; r_c / (β Δt²)]; a −= c, λ −= μ / (1+α).
+      for (std::size_t i = 0; i < nc; ++i)
+        constraint_residual_[i] /= beta * dt * dt;
+      saddle_->solve(residual_.data(), constraint_residual_.data(), correction_.data(), mu_.data());
+      for (std::size_t i = 0; i < nc; ++i)
+        lambda_[i] -= mu_[i] / weight;
+    } else {
+      if (!linear || !linear_factor_valid_ || !same_coefficients(coefficients, factored_)) {
+        system_.factor(u_.data(), v_.data(), coefficients);
+        ++statistics_.factorizations;
+        factored_ = coefficients;
+        linear_factor_valid_ = linear;
+      }
+      system_.solve(residual_.data(), correction_.data());
     }
-    system_.solve(residual_.data(), correction_.data());
     for (std::size_t i = 0; i < n; ++i)
       a[i] -= correction_[i];
     increment = beta * dt * dt * norm(correction_);
     if (linear) {  // exact after one solve: no second evaluation
-      ++statistics_.steps;
-      ++statistics_.iterations;
+      for (std::size_t i = 0; i < n; ++i)
+        u_[i] = state.u_predicted[i] + beta * dt * dt * a[i];
       statistics_.last_iterations = 1;
-      statistics_.most_iterations = std::max(statistics_.most_iterations, 1);
       return;
     }
   }

@@ -6,12 +6,17 @@
 /// where R(a) = M a + (1+α)(f_int(u, v) + C_R v) − α (f_int(u_n, v_n) + C_R v_n)
 ///              − (1+α) f_ext(t_{n+1}) + α f_ext(t_n),  u = ũ + β Δt² a,  v = ṽ + γ Δt a,
 /// and C_R = a_R M + b_R K_R (Rayleigh). See docs/theory.md, "HHT-α with Newton iterations".
+/// With constraints C(t) u = g(t) (constraint_set.hpp) the multipliers join the unknowns:
+///   R += (1+α) C_{n+1}ᵀ λ_{n+1} − α C_nᵀ λ_n,   C_{n+1} u_{n+1} = g(t_{n+1}),
+/// and each iteration solves [A Cᵀ; C 0] through a SaddlePointSolver (docs/theory.md,
+/// "Constraints in HHT-α").
 
 #include <cstddef>
 #include <string>
 #include <vector>
 
 #include "framework/base/error.hpp"
+#include "framework/time/constraint_set.hpp"
 #include "framework/time/newmark.hpp"
 #include "framework/time/second_order_system.hpp"
 
@@ -77,6 +82,16 @@ class NewtonStepSolver : public SecondOrderProblem {
   /// Solves M a = f_ext(t) − f_int(u, v) − C_R v for the acceleration at \p time.
   void initial_acceleration(double time, const double* u, const double* v, double* a);
 
+  /// Holds the unknowns to \p constraints from now on, each iteration solved by \p solver
+  /// (neither owned; both must outlive this solver; nullptr for both detaches). Needs β > 0.
+  /// Call before initial_acceleration(), which then finds λ_0 with a.
+  void constrain(ConstraintSet* constraints, SaddlePointSolver* solver);
+  /// λ_{n+1} of the last converged step (one per row of constraint_rows()); λ holds the
+  /// constraint forces −Cᵀλ acting on the unknowns.
+  const std::vector<double>& multipliers() const { return lambda_old_; }
+  /// The constraint rows of the last converged step.
+  const ConstraintRows& constraint_rows() const { return rows_old_; }
+
   /// The counters so far.
   const NewtonStatistics& statistics() const { return statistics_; }
   /// The system.
@@ -86,6 +101,10 @@ class NewtonStepSolver : public SecondOrderProblem {
   /// g = f_int(u, v) + C_R v, the force balanced against M a (work = Rayleigh product scratch).
   void balance_force(const double* u, const double* v, double* g);
   double norm(const std::vector<double>& x) const;
+  /// The Newton iteration of one attempt at the step (rows_next_ set); throws StepNotConverged.
+  void iterate(const StepState& state, double* acceleration);
+  /// Throws StepNotConverged for the step of \p state with \p failure.
+  [[noreturn]] void fail(const StepState& state, const std::string& failure) const;
 
   SecondOrderSystem& system_;
   NewtonSettings settings_;
@@ -96,6 +115,10 @@ class NewtonStepSolver : public SecondOrderProblem {
   // g(u_n, v_n) of the last converged iterate, reused when the next step starts from it.
   std::vector<double> cached_u_, cached_v_, cached_force_;
   std::vector<double> u_, v_, force_, fixed_, residual_, correction_, mass_a_, scratch_;
+  ConstraintSet* constraints_ = nullptr;
+  SaddlePointSolver* saddle_ = nullptr;
+  ConstraintRows rows_old_, rows_next_;  // C_n, g_n and C_{n+1}, g_{n+1}
+  std::vector<double> lambda_old_, lambda_, constraint_residual_, mu_, constraint_force_;
 };
 
 }  // namespace railfe

@@ -8,6 +8,7 @@
 /// instead of writing factor() and solve().
 
 #include <cstddef>
+#include <vector>
 
 namespace railfe {
 
@@ -20,6 +21,19 @@ struct MatrixCoefficients {
   double stiffness = 0;  ///< coefficient of the tangent stiffness K_t
   double rayleigh_stiffness =
       0;  ///< coefficient of K_R (zero without stiffness-proportional damping)
+};
+
+/// Whether \p a and \p b are the same coefficients (a factorization made for one serves both).
+inline bool same_coefficients(const MatrixCoefficients& a, const MatrixCoefficients& b) {
+  return a.mass == b.mass && a.damping == b.damping && a.stiffness == b.stiffness &&
+         a.rayleigh_stiffness == b.rayleigh_stiffness;
+}
+
+/// One entry of a sparse matrix, for solvers that assemble the whole saddle-point matrix.
+struct MatrixEntry {
+  std::size_t row = 0;     ///< row (unknown index)
+  std::size_t column = 0;  ///< column (unknown index)
+  double value = 0;        ///< value (entries at the same place add up)
 };
 
 /// A second-order system M a + f_int(u, v) = f_ext(t), seen through the operations an implicit
@@ -50,6 +64,16 @@ class SecondOrderSystem {
   virtual void factor(const double* u, const double* v, const MatrixCoefficients& coefficients) = 0;
   /// Solves A x = \p rhs with the A of the last factor() call.
   virtual void solve(const double* rhs, double* x) = 0;
+  /// Solves A X = B for \p n_columns right-hand sides stored one column after another (each of
+  /// length n_unknowns()). The default calls solve() per column; a system whose linear solver
+  /// passes over its factor once for a block (LinearSolver::solve_block) overrides it.
+  virtual void solve_columns(const double* rhs, std::size_t n_columns, double* x);
+  /// y = A x with the A of the last factor() call, for solvers that check a coupled solution
+  /// end to end. Returns false (the default) when the system cannot.
+  virtual bool apply_matrix(const double* x, double* y);
+  /// Appends the entries of the A of the last factor() call to \p entries (for a monolithic
+  /// saddle-point solve). The default throws std::logic_error.
+  virtual void matrix_entries(std::vector<MatrixEntry>& entries) const;
   /// Σ x_i y_i over every rank's owned unknowns. The default sums this rank's only (serial).
   virtual double dot(const double* x, const double* y) const;
 };
