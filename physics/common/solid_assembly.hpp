@@ -55,7 +55,8 @@ void add_solid_constraints(
 std::vector<double> element_stresses(const MeshPartition& partition, const MaterialTable& materials,
                                      const double* u_overlap);
 
-/// What MueLu needs to coarsen elasticity well: node coordinates and the six rigid-body modes.
+/// What MueLu needs to coarsen elasticity well: node coordinates and the six rigid-body modes
+/// (with the rotation components of 6-DOF nodes).
 ProblemTraits elasticity_traits(const DofMap& dofs);
 
 }  // namespace railfe
