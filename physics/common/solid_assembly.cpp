@@ -277,12 +277,11 @@ std::vector<std::pair<GlobalIndex, GlobalIndex>> pair_tied_nodes(const Tie& tie,
   return pairs;
 }
 
-void add_solid_constraints(
-    const SolidConditions& conditions,
-    const std::vector<std::vector<std::pair<GlobalIndex, GlobalIndex>>>& ties, const DofMap& dofs,
-    LinearConstraints& constraints) {
+void prescribe_displacements(const SolidConditions& conditions, const DofMap& dofs,
+                             LinearConstraints& constraints) {
   const MeshPartition& partition = dofs.partition();
   const Mesh& mesh = partition.mesh();
+  const TpetraMap& owned = *dofs.owned_map();
   for (const auto& condition : conditions.displacements) {
     std::optional<Expression> expression;
     if (!condition.expression.empty())
@@ -294,9 +293,17 @@ void add_solid_constraints(
       const double* c = partition.coordinates(local);
       const double value = expression ? (*expression)(c[0], c[1], c[2]) : condition.value;
       for (int component : condition.components)
-        constraints.prescribe(3 * node + component, value);
+        constraints.prescribe(owned.getGlobalElement(dofs.local_dof(local, component)), value);
     }
   }
+}
+
+void add_solid_constraints(
+    const SolidConditions& conditions,
+    const std::vector<std::vector<std::pair<GlobalIndex, GlobalIndex>>>& ties, const DofMap& dofs,
+    LinearConstraints& constraints) {
+  const MeshPartition& partition = dofs.partition();
+  prescribe_displacements(conditions, dofs, constraints);
   for (const auto& pairs : ties) {
     for (const auto& [slave, master] : pairs) {
       if (partition.node_ranks()[slave] < 0 || partition.node_ranks()[master] < 0)

@@ -2,11 +2,10 @@
 
 #include <Tpetra_Vector.hpp>
 
-#include <optional>
 #include <stdexcept>
 
 #include "framework/base/error.hpp"
-#include "framework/deck/expression.hpp"
+#include "physics/common/solid_assembly.hpp"
 #include "physics/elements/point_mass.hpp"
 
 namespace railfe {
@@ -169,23 +168,7 @@ void assemble_structural_loads(const SolidConditions& conditions, const SectionT
 
 void add_structural_constraints(const SolidConditions& conditions, const DofMap& dofs,
                                 LinearConstraints& constraints) {
-  const MeshPartition& partition = dofs.partition();
-  const Mesh& mesh = partition.mesh();
-  const auto& owned_map = *dofs.owned_map();
-  for (const auto& condition : conditions.displacements) {
-    std::optional<Expression> expression;
-    if (!condition.expression.empty())
-      expression.emplace(condition.expression, "", "");
-    for (GlobalIndex node : mesh.node_set(condition.node_set, "", "").nodes) {
-      const LocalIndex local = partition.local_node(node);
-      if (local < 0 || local >= partition.n_owned_nodes())
-        continue;
-      const double* c = partition.coordinates(local);
-      const double value = expression ? (*expression)(c[0], c[1], c[2]) : condition.value;
-      for (int component : condition.components)
-        constraints.prescribe(owned_map.getGlobalElement(dofs.local_dof(local, component)), value);
-    }
-  }
+  prescribe_displacements(conditions, dofs, constraints);
   constraints.finalize();
 }
 

@@ -11,7 +11,8 @@ namespace railfe {
 
 ParameterSpec line_parameters() {
   ParameterSpec line(
-      "Beam2 elements along straight segments through Points: node sets 'start', 'end' (first "
+      "Beam2 (or spring2) elements along straight segments through Points: node sets 'start', "
+      "'end' (first "
       "and last node), 'points' (every given point) and 'all'.");
   line.required_real_array("Points",
                            "x, y, z of each point in turn (at least two points): "
