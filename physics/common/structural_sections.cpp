@@ -2,6 +2,7 @@
 
 #include <Teuchos_Array.hpp>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -369,6 +370,30 @@ void SectionTable::check_elements(const Mesh& mesh, const std::string& deck) con
       }
     }
   }
+}
+
+std::vector<char> massless_components(const Mesh& mesh, const SectionTable& sections) {
+  std::vector<char> massless(6 * static_cast<std::size_t>(mesh.n_nodes()), 1);
+  for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
+    const ElementBlock& block = mesh.blocks[b];
+    if (!sections.has_section(static_cast<int>(b)))
+      continue;
+    const StructuralSection& section = sections.of_block(static_cast<int>(b));
+    std::array<bool, 6> mass{};  // which components the block's elements give mass
+    if (section.kind == StructuralKind::beam) {
+      mass.fill(section.beam.material.density > 0);
+    } else if (section.kind == StructuralKind::point_mass) {
+      for (int c = 0; c < 3; ++c) {
+        mass[c] = section.point.mass > 0;
+        mass[3 + c] = section.point.inertia(c, c) > 0;
+      }
+    }
+    for (GlobalIndex node : block.connectivity)
+      for (int c = 0; c < 6; ++c)
+        if (mass[c])
+          massless[6 * static_cast<std::size_t>(node) + c] = 0;
+  }
+  return massless;
 }
 
 SectionTable structural_sections(const Model& model, const std::string& step) {

@@ -99,6 +99,11 @@ class SectionTable {
 /// "the modal step 'modes'").
 SectionTable structural_sections(const Model& model, const std::string& step);
 
+/// Per node of \p mesh, six flags (u_x .. θ_z): 1 where no element of \p sections gives the
+/// component mass (a node held by springs alone, a point mass without rotary inertia). Such
+/// DOFs give no finite eigenvalue: a modal analysis does not count them as free.
+std::vector<char> massless_components(const Mesh& mesh, const SectionTable& sections);
+
 /// The beam element of two nodes at \p a and \p b with \p beam's properties.
 BeamElement make_beam(const double* a, const double* b, const BeamProperties& beam);
 

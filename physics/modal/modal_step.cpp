@@ -299,19 +299,31 @@ void ModalStep::check(const CheckContext& context) {
   const long long n_fixed = std::count(fixed.begin(), fixed.end(), 1);
   const long long n_dofs =
       dpn * static_cast<long long>(std::count(active.begin(), active.end(), 1));
-  free_dofs_ = n_dofs - n_fixed;
+  // A free DOF without mass (a node on springs alone) gives no finite eigenvalue either.
+  massless_dofs_ = 0;
+  if (sections_) {
+    const std::vector<char> massless = massless_components(mesh, *sections_);
+    for (std::size_t i = 0; i < fixed.size(); ++i)
+      massless_dofs_ += active[i / 6] && !fixed[i] && massless[i];
+  }
+  free_dofs_ = n_dofs - n_fixed - massless_dofs_;
   if (free_dofs_ == 0) {
-    throw_input_error(deck, path + "/Supports", "fix every DOF of the model: nothing can vibrate",
-                      "supports that leave some DOFs free");
+    throw_input_error(deck, path + "/Supports",
+                      "fix every DOF of the model that has mass: nothing can vibrate",
+                      "supports that leave some DOFs with mass free");
   }
   const KrylovPlan plan =
       plan_krylov_space(first_batch(free_dofs_), parameters_->get<int>("Block size"),
                         parameters_->get<int>("Krylov blocks"), free_dofs_);
   if (!plan.problem.empty()) {
-    throw_input_error(deck, path + "/" + plan.parameter,
-                      plan.problem + " (" + std::to_string(n_dofs) + " DOFs, " +
-                          std::to_string(n_fixed) + " fixed)",
-                      plan.allowed);
+    throw_input_error(
+        deck, path + "/" + plan.parameter,
+        plan.problem + " (" + std::to_string(n_dofs) + " DOFs, " + std::to_string(n_fixed) +
+            " fixed" +
+            (massless_dofs_ > 0 ? ", " + std::to_string(massless_dofs_) + " without mass"
+                                : std::string()) +
+            ")",
+        plan.allowed);
   }
 
   const auto& classification = parameters_->sublist("Classification");
@@ -406,7 +418,7 @@ void ModalStep::run(StepContext& context) {
   const ShiftInvertEigensolver& eigensolver = *solver;
   factor_progress.finish();
 
-  const long long free_dofs = dofs.n_global_dofs() - constraints.n_prescribed();
+  const long long free_dofs = dofs.n_global_dofs() - constraints.n_prescribed() - massless_dofs_;
   ShiftInvertSettings settings;
   settings.n_modes = first_batch(free_dofs);
   settings.block_size = p.get<int>("Block size");

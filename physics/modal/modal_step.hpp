@@ -80,7 +80,8 @@ class ModalStep : public AnalysisStep {
   AxisymmetricFrame frame_;
   ClassifierSettings classifier_;
   bool classify_ = false;
-  long long free_dofs_ = 0;  // DOFs not fixed by a support
+  long long free_dofs_ = 0;      // DOFs not fixed by a support that carry mass
+  long long massless_dofs_ = 0;  // free DOFs that carry no mass (springs alone): no eigenvalue
 };
 
 }  // namespace railfe
