@@ -21,12 +21,14 @@ ElementType element_type_from_exodus(std::string name, int nodes, const std::str
       nodes == 2) {
     return ElementType::beam2;
   }
+  if (name.rfind("SPRING", 0) == 0 && nodes == 2)  // as railfe writes spring2 blocks
+    return ElementType::spring2;
   if (name.rfind("SPHERE", 0) == 0 && nodes == 1)
     return ElementType::point_mass;
   throw_input_error(
       path, "block " + block,
       "element type " + name + " with " + std::to_string(nodes) + " nodes is not supported",
-      "HEX8, BAR2/BEAM2, SPHERE");
+      "HEX8, BAR2/BEAM2, SPRING2, SPHERE");
 }
 
 std::vector<int64_t> entity_ids(const ExodusFile& file, ex_entity_type type, int64_t count) {

@@ -277,12 +277,11 @@ std::vector<std::pair<GlobalIndex, GlobalIndex>> pair_tied_nodes(const Tie& tie,
   return pairs;
 }
 
-void add_solid_constraints(
-    const SolidConditions& conditions,
-    const std::vector<std::vector<std::pair<GlobalIndex, GlobalIndex>>>& ties, const DofMap& dofs,
-    LinearConstraints& constraints) {
+void prescribe_displacements(const SolidConditions& conditions, const DofMap& dofs,
+                             LinearConstraints& constraints) {
   const MeshPartition& partition = dofs.partition();
   const Mesh& mesh = partition.mesh();
+  const TpetraMap& owned = *dofs.owned_map();
   for (const auto& condition : conditions.displacements) {
     std::optional<Expression> expression;
     if (!condition.expression.empty())
@@ -294,9 +293,17 @@ void add_solid_constraints(
       const double* c = partition.coordinates(local);
       const double value = expression ? (*expression)(c[0], c[1], c[2]) : condition.value;
       for (int component : condition.components)
-        constraints.prescribe(3 * node + component, value);
+        constraints.prescribe(owned.getGlobalElement(dofs.local_dof(local, component)), value);
     }
   }
+}
+
+void add_solid_constraints(
+    const SolidConditions& conditions,
+    const std::vector<std::vector<std::pair<GlobalIndex, GlobalIndex>>>& ties, const DofMap& dofs,
+    LinearConstraints& constraints) {
+  const MeshPartition& partition = dofs.partition();
+  prescribe_displacements(conditions, dofs, constraints);
   for (const auto& pairs : ties) {
     for (const auto& [slave, master] : pairs) {
       if (partition.node_ranks()[slave] < 0 || partition.node_ranks()[master] < 0)
@@ -338,7 +345,7 @@ ProblemTraits elasticity_traits(const DofMap& dofs) {
   const MeshPartition& partition = dofs.partition();
   ProblemTraits traits;
   traits.symmetric_positive_definite = true;
-  traits.dofs_per_node = 3;
+  traits.dofs_per_node = dofs.dofs_per_node();
   const LocalIndex n_owned = partition.n_owned_nodes();
   const auto comm = partition.comm().teuchos();
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
@@ -367,15 +374,19 @@ ProblemTraits elasticity_traits(const DofMap& dofs) {
   for (LocalIndex n = 0; n < n_owned; ++n) {
     const double* c = partition.coordinates(n);
     const double x = c[0] - centre[0], y = c[1] - centre[1], z = c[2] - centre[2];
+    const auto dof = [&](int component) { return dofs.local_dof(n, component); };
     for (int d = 0; d < 3; ++d)
-      mode[d][3 * n + d] = 1.0;  // translations
+      mode[d][dof(d)] = 1.0;  // translations
     // rotations about x, y, z: ω × r
-    mode[3][3 * n + 1] = -z;
-    mode[3][3 * n + 2] = y;
-    mode[4][3 * n + 0] = z;
-    mode[4][3 * n + 2] = -x;
-    mode[5][3 * n + 0] = -y;
-    mode[5][3 * n + 1] = x;
+    mode[3][dof(1)] = -z;
+    mode[3][dof(2)] = y;
+    mode[4][dof(0)] = z;
+    mode[4][dof(2)] = -x;
+    mode[5][dof(0)] = -y;
+    mode[5][dof(1)] = x;
+    if (dofs.dofs_per_node() == 6)  // beam and body nodes turn with the body
+      for (int d = 0; d < 3; ++d)
+        mode[3 + d][dof(3 + d)] = 1.0;
   }
   traits.node_coordinates = coordinates;
   traits.near_null_space = modes;

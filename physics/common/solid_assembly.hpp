@@ -43,6 +43,11 @@ std::vector<std::pair<GlobalIndex, GlobalIndex>> pair_tied_nodes(const Tie& tie,
                                                                  const std::string& deck,
                                                                  const std::string& path);
 
+/// Prescribes the Displacements of \p conditions (their components, translations and, on nodes
+/// that carry them, rotations) on the owned nodes of \p dofs.
+void prescribe_displacements(const SolidConditions& conditions, const DofMap& dofs,
+                             LinearConstraints& constraints);
+
 /// Adds the Displacements and the tie pairs (per tie, from pair_tied_nodes) to \p constraints.
 void add_solid_constraints(
     const SolidConditions& conditions,
@@ -55,7 +60,8 @@ void add_solid_constraints(
 std::vector<double> element_stresses(const MeshPartition& partition, const MaterialTable& materials,
                                      const double* u_overlap);
 
-/// What MueLu needs to coarsen elasticity well: node coordinates and the six rigid-body modes.
+/// What MueLu needs to coarsen elasticity well: node coordinates and the six rigid-body modes
+/// (with the rotation components of 6-DOF nodes).
 ProblemTraits elasticity_traits(const DofMap& dofs);
 
 }  // namespace railfe

@@ -10,8 +10,12 @@ namespace railfe {
 void add_solid_condition_parameters(ParameterSpec& spec) {
   ParameterSpec displacement("Prescribed displacements of a node set.");
   displacement.required_text("Node set", "The nodes it applies to.");
-  displacement.text("Components", "xyz", "Which components are prescribed: letters of 'xyz'.");
-  displacement.real("Value", 0.0, "The prescribed value of each listed component.", "m");
+  displacement.text("Components", "xyz",
+                    "Which components are prescribed: letters of 'xyz', and on the 6-DOF nodes of "
+                    "beams, springs and point masses the rotations 'rx', 'ry', 'rz' (e.g. "
+                    "'xyzrxryrz' clamps a beam's end).");
+  displacement.real("Value", 0.0,
+                    "The prescribed value of each listed component (m; rad for rotations).", "m");
   displacement.text("Expression", "",
                     "Instead of Value: a function of x, y, z in m (muParser syntax), evaluated at "
                     "each node, e.g. '1e-3*(2*x+y+z)/2'.");
@@ -30,6 +34,10 @@ void add_solid_condition_parameters(ParameterSpec& spec) {
   ParameterSpec nodal("A force shared equally by the nodes of a node set.");
   nodal.required_text("Node set", "The nodes.");
   nodal.required_real_array("Total force", "Force vector summed over the nodes.", "N", 3);
+  nodal.real_array("Total moment", {0, 0, 0},
+                   "Moment vector summed over the nodes (6-DOF nodes of beams, springs and point "
+                   "masses only).",
+                   "N m", 3);
   spec.named_sublists("Nodal forces", nodal, "Forces at nodes.");
 
   ParameterSpec spin(
@@ -62,16 +70,29 @@ void add_solid_condition_parameters(ParameterSpec& spec) {
 std::vector<int> parse_components(const std::string& letters, const std::string& deck,
                                   const std::string& path) {
   std::vector<int> components;
-  for (char letter : letters) {
+  for (std::size_t i = 0; i < letters.size(); ++i) {
+    const bool rotation = letters[i] == 'r' && i + 1 < letters.size();
+    const char letter = letters[i + rotation];
     const int c = letter == 'x' ? 0 : letter == 'y' ? 1 : letter == 'z' ? 2 : -1;
     if (c < 0) {
       throw_input_error(deck, path, "'" + letters + "' contains '" + std::string(1, letter) + "'",
-                        "the letters x, y and z, e.g. 'xz'");
+                        "the letters x, y and z, e.g. 'xz', and the rotations rx, ry, rz");
     }
-    components.push_back(c);
+    components.push_back(c + 3 * rotation);
+    i += rotation;
   }
   if (components.empty())
     throw_input_error(deck, path, "is empty", "the letters x, y and z");
+  return components;
+}
+
+std::vector<int> parse_translations(const std::string& letters, const std::string& deck,
+                                    const std::string& path) {
+  std::vector<int> components = parse_components(letters, deck, path);
+  for (int c : components)
+    if (c >= 3)
+      throw_input_error(deck, path, "'" + letters + "' names a rotation, and these nodes have none",
+                        "the letters x, y and z, e.g. 'xz'");
   return components;
 }
 
@@ -131,7 +152,8 @@ SolidConditions read_solid_conditions(const Teuchos::ParameterList& step, const 
   for_each_sublist(step.sublist("Nodal forces"), [&](const std::string& name, const auto& list) {
     conditions.nodal_forces.push_back(
         {name, list.template get<std::string>("Node set"),
-         vector3(list.template get<Teuchos::Array<double>>("Total force"))});
+         vector3(list.template get<Teuchos::Array<double>>("Total force")),
+         vector3(list.template get<Teuchos::Array<double>>("Total moment"))});
   });
   for_each_sublist(step.sublist("Centrifugal loads"),
                    [&](const std::string& name, const auto& list) {
@@ -150,6 +172,24 @@ SolidConditions read_solid_conditions(const Teuchos::ParameterList& step, const 
     conditions.probes.push_back({name, list.template get<std::string>("Node set")});
   });
   return conditions;
+}
+
+void refuse_rotations(const SolidConditions& conditions, const std::string& deck,
+                      const std::string& path, const std::string& model) {
+  for (const auto& condition : conditions.displacements)
+    for (int c : condition.components)
+      if (c >= 3)
+        throw_input_error(deck, path + "/Displacements/" + condition.name + "/Components",
+                          "prescribes a rotation, and " + model + " has translations only",
+                          "the letters x, y and z (rx, ry, rz on beam, spring and point-mass "
+                          "nodes)");
+  for (const auto& force : conditions.nodal_forces) {
+    const auto& m = force.total_moment;
+    if (m[0] != 0 || m[1] != 0 || m[2] != 0)
+      throw_input_error(deck, path + "/Nodal forces/" + force.name + "/Total moment",
+                        "is not zero, and " + model + " has translations only",
+                        "a Total moment on beam, spring and point-mass nodes only");
+  }
 }
 
 void check_solid_conditions(const SolidConditions& conditions, const Mesh& mesh,

@@ -20,8 +20,8 @@ namespace railfe {
 struct DisplacementCondition {
   std::string name;             ///< its name in the deck
   std::string node_set;         ///< where it applies
-  std::vector<int> components;  ///< 0 = x, 1 = y, 2 = z
-  double value = 0;             ///< prescribed value (m), when no expression is given
+  std::vector<int> components;  ///< 0 = x, 1 = y, 2 = z; 3..5 rotations θx, θy, θz
+  double value = 0;             ///< prescribed value (m or rad), when no expression is given
   std::string expression;       ///< function of x, y, z (m); overrides value when not empty
 };
 
@@ -37,9 +37,10 @@ struct SurfaceLoad {
 
 /// A force shared equally by the nodes of a node set.
 struct NodalForce {
-  std::string name;                     ///< its name in the deck
-  std::string node_set;                 ///< the nodes
-  std::array<double, 3> total_force{};  ///< N, summed over the nodes
+  std::string name;                      ///< its name in the deck
+  std::string node_set;                  ///< the nodes
+  std::array<double, 3> total_force{};   ///< N, summed over the nodes
+  std::array<double, 3> total_moment{};  ///< N m, summed over the nodes (6-DOF nodes only)
 };
 
 /// The centrifugal load of a node set spinning about an axis, so that a static step can start an
@@ -81,16 +82,27 @@ struct SolidConditions {
 /// \p spec.
 void add_solid_condition_parameters(ParameterSpec& spec);
 
-/// Component indices (0 = x, 1 = y, 2 = z) of a deck string of letters such as "xz". Throws
-/// InputError naming \p deck and \p path for other letters or an empty string.
+/// Component indices (0 = x, 1 = y, 2 = z; 3, 4, 5 = the rotations θx, θy, θz written "rx",
+/// "ry", "rz") of a deck string such as "xz" or "xyzrx". Throws InputError naming \p deck and
+/// \p path for other letters or an empty string.
 std::vector<int> parse_components(const std::string& letters, const std::string& deck,
                                   const std::string& path);
+
+/// parse_components() for nodes that carry translations only: rotations are refused too.
+std::vector<int> parse_translations(const std::string& letters, const std::string& deck,
+                                    const std::string& path);
 
 /// Reads the conditions from a validated step list. Throws InputError (naming \p deck and the
 /// step \p path) for combinations the spec cannot express: a surface load with none or several
 /// of traction, pressure and total force; bad component letters; invalid expressions.
 SolidConditions read_solid_conditions(const Teuchos::ParameterList& step, const std::string& deck,
                                       const std::string& path);
+
+/// Throws InputError naming \p deck and the parameter under \p path when \p conditions prescribe
+/// a rotation (rx, ry, rz) or apply a Total moment on a model whose nodes carry translations
+/// only (\p model says what it is, for the message).
+void refuse_rotations(const SolidConditions& conditions, const std::string& deck,
+                      const std::string& path, const std::string& model);
 
 /// Checks that every node set and side set named exists in \p mesh (InputError otherwise).
 void check_solid_conditions(const SolidConditions& conditions, const Mesh& mesh,

@@ -297,8 +297,8 @@ void read_loads(const Teuchos::ParameterList& step, const std::string& deck,
     PrescribedMotion motion;
     motion.name = name;
     motion.node_set = entry.template get<std::string>("Node set");
-    motion.components = parse_components(entry.template get<std::string>("Components"), deck,
-                                         where + "/Components");
+    motion.components = parse_translations(entry.template get<std::string>("Components"), deck,
+                                           where + "/Components");
     motion.velocity = entry.template get<std::string>("Kind") == "velocity";
     motion.function = entry.template get<std::string>("Function");
     check_expression(motion.function, deck, where + "/Function");
@@ -320,7 +320,7 @@ std::array<bool, 3> fixed_letters(const std::string& letters, const std::string&
   std::array<bool, 3> fixed{};
   if (letters.empty())
     return fixed;
-  for (int component : parse_components(letters, deck, path))
+  for (int component : parse_translations(letters, deck, path))
     fixed[component] = true;
   return fixed;
 }

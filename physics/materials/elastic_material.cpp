@@ -4,6 +4,8 @@
 
 #include <Teuchos_Array.hpp>
 
+#include <algorithm>
+
 #include "framework/base/error.hpp"
 
 namespace railfe {
@@ -16,7 +18,9 @@ ParameterSpec materials_parameters() {
   material.required_real("Poisson's ratio", "Poisson's ratio nu.", "", Range::open(-1.0, 0.5));
   // Up to 1e9 leaves room for explicit mass scaling (steel x 1e5).
   material.required_real("Density", "Mass density rho.", "kg/m^3", Range::open_closed(0, 1e9));
-  material.required_text_array("Blocks", "Element blocks made of this material.");
+  material.text_array("Blocks", {},
+                      "Solid element blocks made of this material (may be left out for a "
+                      "material that only Sections name, for beams).");
   material.choice(
       "Element", "full integration",
       {{"full integration", "trilinear hex8, 2x2x2 Gauss points (locks in thin bending)"},
@@ -70,6 +74,12 @@ void MaterialTable::require_solid_blocks(const Mesh& mesh, const std::string& de
 MaterialTable solid_materials(const Model& model, const std::string& step,
                               EnhancedStrainSupport enhanced_strain) {
   const std::string& deck = model.deck().source;
+  const Mesh& mesh = model.mesh();
+  const bool solids = std::any_of(mesh.blocks.begin(), mesh.blocks.end(), [](const auto& block) {
+    return block.type == ElementType::hex8;
+  });
+  if (!model.has_section("Materials") && !solids)  // beams, springs and masses alone
+    return MaterialTable(Teuchos::ParameterList(), mesh, deck);
   if (!model.has_section("Materials")) {
     throw_input_error(deck, "Materials",
                       "missing: " + step + " needs a material for every solid block",

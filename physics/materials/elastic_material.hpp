@@ -61,7 +61,8 @@ class MaterialTable {
 };
 
 /// The materials of a step that needs one for every solid (hex8) block: reads the deck's
-/// Materials section of \p model. Throws InputError naming the deck when the section is missing
+/// Materials section of \p model (an empty table when the deck has none and the mesh no solid
+/// block). Throws InputError naming the deck when the section is missing
 /// (\p step describes the step in the message, e.g. "the statics step 'load'"), a solid block
 /// has no material, or a material asks for the enhanced-strain element and \p enhanced_strain
 /// says the step's module cannot use it (a choice is refused rather than silently ignored).

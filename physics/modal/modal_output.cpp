@@ -19,11 +19,16 @@ namespace railfe {
 
 namespace {
 
-// The owned node values (node-major, 3 per node) of column \p j.
+// The owned nodes' translations (node-major, 3 per node) of column \p j, whose nodes carry
+// \p dofs_per_node unknowns (translations first).
 std::vector<double> owned_nodal_values(const MeshPartition& partition,
-                                       const TpetraMultiVector& modes, std::size_t j) {
+                                       const TpetraMultiVector& modes, std::size_t j,
+                                       int dofs_per_node) {
   const auto data = modes.getData(j);
-  return std::vector<double>(data.begin(), data.begin() + 3 * partition.n_owned_nodes());
+  std::vector<double> values(3 * static_cast<std::size_t>(partition.n_owned_nodes()));
+  for (std::size_t i = 0; i < values.size(); ++i)
+    values[i] = data[dofs_per_node * (i / 3) + i % 3];
+  return values;
 }
 
 const char* kFamilies[] = {"axial", "radial", "circumferential", "ambiguous"};
@@ -59,7 +64,8 @@ void ModalStep::classify(const MeshPartition& partition, const TpetraMultiVector
   std::vector<double> packed;  // per mode: family, n, m, shares ×4, phase
   std::vector<std::string> notes;
   for (std::size_t j = 0; j < records.size(); ++j) {
-    const auto field = gather_node_field(partition, owned_nodal_values(partition, modes, j), 3);
+    const auto field =
+        gather_node_field(partition, owned_nodal_values(partition, modes, j, dofs_per_node_), 3);
     if (!comm.is_root())
       continue;
     std::vector<std::array<double, 3>> displacements(nodes.size());
@@ -134,7 +140,8 @@ void ModalStep::write_results(StepContext& context, const MeshPartition& partiti
                       context.model.deck().parameters->get<std::string>("Title"),
                       {"displacement_x", "displacement_y", "displacement_z"}, {}, root);
   for (std::size_t j = 0; j < records.size(); ++j) {
-    const auto field = gather_node_field(partition, owned_nodal_values(partition, *modes, j), 3);
+    const auto field =
+        gather_node_field(partition, owned_nodal_values(partition, *modes, j, dofs_per_node_), 3);
     writer.write_step(static_cast<double>(j + 1), field, {});
   }
   writer.close();

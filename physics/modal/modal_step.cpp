@@ -21,6 +21,7 @@
 #include "framework/output/field_gather.hpp"
 #include "physics/common/solid_assembly.hpp"
 #include "physics/common/solid_conditions.hpp"
+#include "physics/common/structural_assembly.hpp"
 #include "physics/modal/krylov_plan.hpp"
 #include "physics/modal/mode_normalization.hpp"
 #include "physics/modal/shift_invert.hpp"
@@ -210,9 +211,10 @@ std::vector<char> ModalStep::check_blocks_and_supports(const CheckContext& conte
     const std::string name = supports.name(it);
     const auto& list = supports.sublist(name);
     const std::string where = path + "/Supports/" + name;
-    ModalSupport support{
-        name, list.get<std::string>("Node set"),
-        parse_components(list.get<std::string>("Components"), deck, where + "/Components")};
+    const auto letters = list.get<std::string>("Components");
+    ModalSupport support{name, list.get<std::string>("Node set"),
+                         sections_ ? parse_components(letters, deck, where + "/Components")
+                                   : parse_translations(letters, deck, where + "/Components")};
     const auto& nodes = mesh.node_set(support.node_set, deck, where + "/Node set").nodes;
     if (std::none_of(nodes.begin(), nodes.end(), [&](GlobalIndex n) { return active[n]; })) {
       throw_input_error(
@@ -227,7 +229,7 @@ std::vector<char> ModalStep::check_blocks_and_supports(const CheckContext& conte
 
 const DofMap& ModalStep::step_dofs(Model& model) {
   if (!block_mesh_)
-    return model.dofs(3);
+    return model.dofs(dofs_per_node_);
   if (!block_dofs_) {
     block_partition_ =
         std::make_unique<MeshPartition>(*block_mesh_, model.comm(), model.partition_method());
@@ -236,12 +238,41 @@ const DofMap& ModalStep::step_dofs(Model& model) {
   return *block_dofs_;
 }
 
+void ModalStep::check_structural(const CheckContext& context) {
+  const Mesh& mesh = context.model.mesh();
+  const std::string& deck = context.source();
+  const std::string step = "the modal step '" + context.step_name + "'";
+  sections_.reset();
+  dofs_per_node_ = 3;
+  if (!has_structural_blocks(mesh))
+    return;
+  // TODO(h-dofs): mixed 3/6 DOFs per node with solid-beam ties lift this refusal.
+  if (has_solid_blocks(mesh))
+    throw_input_error(deck, "Mesh",
+                      "has both solid (hex8) and beam, spring or point-mass blocks: " + step +
+                          " needs mixed DOFs per node, which are not available yet",
+                      "a model of solids alone, or of beams, springs and point masses alone");
+  for (const char* name : {"Blocks", "Classification"}) {
+    const bool given = std::string(name) == "Blocks"
+                           ? !parameters_->get<Teuchos::Array<std::string>>("Blocks").empty()
+                           : parameters_->sublist("Classification").get<bool>("Axisymmetric");
+    if (given)
+      throw_input_error(deck, context.path + "/" + name,
+                        "is available for solid models only, and the model has beams, springs "
+                        "and point masses",
+                        "leave it out");
+  }
+  sections_ = structural_sections(context.model, step);
+  dofs_per_node_ = 6;
+}
+
 void ModalStep::check(const CheckContext& context) {
   const Mesh& mesh = context.model.mesh();
   const std::string& deck = context.source();
   const std::string& path = context.path;
   materials_ = solid_materials(context.model, "the modal step '" + context.step_name + "'",
                                EnhancedStrainSupport::supported);
+  check_structural(context);
   for (std::size_t b = 0; b < mesh.blocks.size(); ++b) {
     if (materials_->has_material(static_cast<int>(b)) &&
         !(materials_->of_block(static_cast<int>(b)).density > 0)) {
@@ -259,26 +290,40 @@ void ModalStep::check(const CheckContext& context) {
   // Fixed DOFs carry no mass and no eigenvalue: every size limit counts the free ones, of the
   // nodes that carry unknowns (those the kept elements use).
   const std::vector<char> active = check_blocks_and_supports(context);
-  std::vector<char> fixed(3 * static_cast<std::size_t>(mesh.n_nodes()), 0);
+  const int dpn = dofs_per_node_;
+  std::vector<char> fixed(dpn * static_cast<std::size_t>(mesh.n_nodes()), 0);
   for (const auto& support : supports_)
     for (GlobalIndex node : mesh.node_set(support.node_set, deck, path).nodes)
       for (int c : support.components)
-        fixed[3 * static_cast<std::size_t>(node) + c] = active[node];
+        fixed[dpn * static_cast<std::size_t>(node) + c] = active[node];
   const long long n_fixed = std::count(fixed.begin(), fixed.end(), 1);
-  const long long n_dofs = 3 * static_cast<long long>(std::count(active.begin(), active.end(), 1));
-  free_dofs_ = n_dofs - n_fixed;
+  const long long n_dofs =
+      dpn * static_cast<long long>(std::count(active.begin(), active.end(), 1));
+  // A free DOF without mass (a node on springs alone) gives no finite eigenvalue either.
+  massless_dofs_ = 0;
+  if (sections_) {
+    const std::vector<char> massless = massless_components(mesh, *sections_);
+    for (std::size_t i = 0; i < fixed.size(); ++i)
+      massless_dofs_ += active[i / 6] && !fixed[i] && massless[i];
+  }
+  free_dofs_ = n_dofs - n_fixed - massless_dofs_;
   if (free_dofs_ == 0) {
-    throw_input_error(deck, path + "/Supports", "fix every DOF of the model: nothing can vibrate",
-                      "supports that leave some DOFs free");
+    throw_input_error(deck, path + "/Supports",
+                      "fix every DOF of the model that has mass: nothing can vibrate",
+                      "supports that leave some DOFs with mass free");
   }
   const KrylovPlan plan =
       plan_krylov_space(first_batch(free_dofs_), parameters_->get<int>("Block size"),
                         parameters_->get<int>("Krylov blocks"), free_dofs_);
   if (!plan.problem.empty()) {
-    throw_input_error(deck, path + "/" + plan.parameter,
-                      plan.problem + " (" + std::to_string(n_dofs) + " DOFs, " +
-                          std::to_string(n_fixed) + " fixed)",
-                      plan.allowed);
+    throw_input_error(
+        deck, path + "/" + plan.parameter,
+        plan.problem + " (" + std::to_string(n_dofs) + " DOFs, " + std::to_string(n_fixed) +
+            " fixed" +
+            (massless_dofs_ > 0 ? ", " + std::to_string(massless_dofs_) + " without mass"
+                                : std::string()) +
+            ")",
+        plan.allowed);
   }
 
   const auto& classification = parameters_->sublist("Classification");
@@ -326,15 +371,22 @@ void ModalStep::run(StepContext& context) {
   Stopwatch clock;
   FeMatrix stiffness(dofs);
   FeMatrix mass(dofs);
-  assemble_elastic_stiffness(stiffness, *materials_);
-  assemble_mass(mass, *materials_, p.get<std::string>("Mass") == "lumped");
+  const bool lumped = p.get<std::string>("Mass") == "lumped";
+  if (sections_) {
+    assemble_structural_stiffness(stiffness, *sections_);
+    assemble_structural_mass(mass, *sections_, lumped);
+  } else {
+    assemble_elastic_stiffness(stiffness, *materials_);
+    assemble_mass(mass, *materials_, lumped);
+  }
   LinearConstraints constraints(dofs, context.source());
   for (const auto& support : supports_) {
     for (GlobalIndex node : model.mesh().node_set(support.node_set, "", "").nodes) {
       if (partition.node_ranks()[node] != comm.rank())
         continue;
+      const LocalIndex local = partition.local_node(node);
       for (int c : support.components)
-        constraints.prescribe(3 * node + c, 0.0);
+        constraints.prescribe(dofs.owned_map()->getGlobalElement(dofs.local_dof(local, c)), 0.0);
     }
   }
   constraints.finalize();
@@ -366,7 +418,7 @@ void ModalStep::run(StepContext& context) {
   const ShiftInvertEigensolver& eigensolver = *solver;
   factor_progress.finish();
 
-  const long long free_dofs = dofs.n_global_dofs() - constraints.n_prescribed();
+  const long long free_dofs = dofs.n_global_dofs() - constraints.n_prescribed() - massless_dofs_;
   ShiftInvertSettings settings;
   settings.n_modes = first_batch(free_dofs);
   settings.block_size = p.get<int>("Block size");
@@ -455,8 +507,8 @@ void ModalStep::run(StepContext& context) {
   std::vector<ModeRecord> records;
   const auto checks = check_modes(
       *K, *M, result.eigenvalues,
-      result.vectors.is_null() ? TpetraMultiVector(K->getDomainMap(), 1) : *result.vectors, 3,
-      p.get<double>("Doublet tolerance"));
+      result.vectors.is_null() ? TpetraMultiVector(K->getDomainMap(), 1) : *result.vectors,
+      dofs_per_node_, p.get<double>("Doublet tolerance"));
   std::vector<int> kept;
   for (std::size_t i = 0; i < result.eigenvalues.size(); ++i) {
     const double f = frequency_of(result.eigenvalues[i]);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "framework/app/module.hpp"
+#include "physics/common/structural_sections.hpp"
 #include "physics/materials/elastic_material.hpp"
 #include "physics/modal/mode_checks.hpp"
 #include "physics/modal/mode_classifier.hpp"
@@ -18,7 +19,7 @@ namespace railfe {
 struct ModalSupport {
   std::string name;             ///< its name in the deck
   std::string node_set;         ///< the nodes
-  std::vector<int> components;  ///< fixed components (0 = x, 1 = y, 2 = z)
+  std::vector<int> components;  ///< fixed components (0 = x, 1 = y, 2 = z; 3..5 rotations)
 };
 
 /// A reference frequency to compare a computed mode with.
@@ -52,6 +53,8 @@ class ModalStep : public AnalysisStep {
   // The DOFs the step computes on: the model's, or those of the Blocks' own partition (made on
   // first use, collective).
   const DofMap& step_dofs(Model& model);
+  // Reads Sections for a model of beams, springs and point masses (6 DOFs per node).
+  void check_structural(const CheckContext& context);
   // Reads Blocks and Supports; returns the nodes that carry unknowns.
   std::vector<char> check_blocks_and_supports(const CheckContext& context);
   // Modes of the first eigensolver batch: Modes, or its automatic value.
@@ -66,6 +69,8 @@ class ModalStep : public AnalysisStep {
 
   const Teuchos::ParameterList* parameters_;
   std::optional<MaterialTable> materials_;
+  std::optional<SectionTable> sections_;  // a model of beams, springs and point masses
+  int dofs_per_node_ = 3;                 // 6 for a structural model
   std::vector<ModalSupport> supports_;
   std::vector<std::string> block_names_;            // Blocks (empty = the whole mesh)
   std::unique_ptr<Mesh> block_mesh_;                // the mesh of Blocks, if given
@@ -75,7 +80,8 @@ class ModalStep : public AnalysisStep {
   AxisymmetricFrame frame_;
   ClassifierSettings classifier_;
   bool classify_ = false;
-  long long free_dofs_ = 0;  // DOFs not fixed by a support
+  long long free_dofs_ = 0;      // DOFs not fixed by a support that carry mass
+  long long massless_dofs_ = 0;  // free DOFs that carry no mass (springs alone): no eigenvalue
 };
 
 }  // namespace railfe

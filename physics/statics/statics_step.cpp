@@ -17,20 +17,22 @@
 #include "physics/common/contact_tables.hpp"
 #include "physics/common/node_set_stresses.hpp"
 #include "physics/common/solid_assembly.hpp"
+#include "physics/common/structural_assembly.hpp"
 #include "physics/statics/contact_newton.hpp"
 
 namespace railfe {
 
 namespace {
 
-// Sums of the x, y and z components of a vector over the owned DOFs of all ranks.
-std::array<double, 3> component_sums(const TpetraVector& vector, const Communicator& comm) {
+// Sums of the x, y and z force components of a vector over the owned nodes of all ranks.
+std::array<double, 3> component_sums(const TpetraVector& vector, const DofMap& dofs) {
   std::array<double, 3> sums{0, 0, 0};
   const auto data = vector.getData();
-  for (decltype(data.size()) i = 0; i < data.size(); ++i)
-    sums[i % 3] += data[i];
+  for (LocalIndex node = 0; node < dofs.partition().n_owned_nodes(); ++node)
+    for (int d = 0; d < 3; ++d)
+      sums[d] += data[dofs.local_dof(node, d)];
   for (double& sum : sums)
-    sum = comm.sum(sum);
+    sum = dofs.partition().comm().sum(sum);
   return sums;
 }
 
@@ -43,8 +45,23 @@ void StaticsStep::check(const CheckContext& context) {
   const std::string& deck = context.source();
   conditions_ = read_solid_conditions(*parameters_, deck, context.path);
   check_solid_conditions(conditions_, mesh, deck, context.path);
-  materials_ = solid_materials(context.model, "the statics step '" + context.step_name + "'",
-                               EnhancedStrainSupport::supported);
+  const std::string step = "the statics step '" + context.step_name + "'";
+  materials_ = solid_materials(context.model, step, EnhancedStrainSupport::supported);
+  sections_.reset();
+  dofs_per_node_ = 3;
+  if (has_structural_blocks(mesh)) {
+    // TODO(h-dofs): mixed 3/6 DOFs per node with solid-beam ties lift this refusal.
+    if (has_solid_blocks(mesh))
+      throw_input_error(deck, "Mesh",
+                        "has both solid (hex8) and beam, spring or point-mass blocks: " + step +
+                            " needs mixed DOFs per node, which are not available yet",
+                        "a model of solids alone, or of beams, springs and point masses alone");
+    sections_ = structural_sections(context.model, step);
+    dofs_per_node_ = 6;
+    check_structural_conditions(conditions_, deck, context.path);
+  } else {
+    refuse_rotations(conditions_, deck, context.path, "a model of solids");
+  }
   for (const auto& force : conditions_.nodal_forces) {
     bool attached = false;
     for (GlobalIndex node : mesh.node_set(force.node_set, deck, "").nodes) {
@@ -71,6 +88,15 @@ void StaticsStep::check(const CheckContext& context) {
                           "'full' with enhanced-strain materials, or Element 'full integration'");
   springs_ = read_ground_springs(*parameters_, mesh, deck, context.path);
   contact_pairs_ = read_contact_pairs(*parameters_, deck, context.path, ContactUse::statics);
+  if (sections_ && !springs_.empty())
+    throw_input_error(deck, context.path + "/Ground springs/" + springs_.front().name,
+                      "acts on solid nodes, and the model has beams, springs and point masses",
+                      "a spring-damper section on a one-node block (Sections) for springs to "
+                      "the ground");
+  if (sections_ && !contact_pairs_.empty())
+    throw_input_error(deck, context.path + "/Contact pairs",
+                      "needs solid (hex8) surfaces, and the model has none",
+                      "no contact pairs on a model of beams, springs and point masses");
   check_contact_pairs(contact_pairs_, mesh, deck, context.path);
   if (contact_pairs_.empty()) {
     for (const char* name : {"Contact iterations", "Contact tolerance"})
@@ -87,7 +113,7 @@ void StaticsStep::check(const CheckContext& context) {
 
 void StaticsStep::run(StepContext& context) {
   Model& model = context.model;
-  const DofMap& dofs = model.dofs(3);
+  const DofMap& dofs = model.dofs(dofs_per_node_);
   const Communicator& comm = model.comm();
   const std::string section = "Step " + context.step_name + " (statics)";
   RunSummary& summary = context.summary;
@@ -105,7 +131,10 @@ void StaticsStep::run(StepContext& context) {
   start_phase();
   Progress assembly_progress =
       context.progress("stiffness assembly", dofs.partition().n_local_elements());
-  assemble_elastic_stiffness(stiffness, *materials_, &assembly_progress, one_point_kappa_);
+  if (sections_)
+    assemble_structural_stiffness(stiffness, *sections_);
+  else
+    assemble_elastic_stiffness(stiffness, *materials_, &assembly_progress, one_point_kappa_);
   if (!springs_.empty())
     stiffness.add_to_diagonal(ground_spring_diagonal(springs_, dofs));
   assembly_progress.finish();
@@ -113,8 +142,11 @@ void StaticsStep::run(StepContext& context) {
 
   start_phase();
   auto forces = Teuchos::rcp(new TpetraVector(dofs.owned_map()));
-  assemble_solid_loads(conditions_, *materials_, dofs, *forces);
-  const auto applied = component_sums(*forces, comm);
+  if (sections_)
+    assemble_structural_loads(conditions_, *sections_, dofs, *forces);
+  else
+    assemble_solid_loads(conditions_, *materials_, dofs, *forces);
+  const auto applied = component_sums(*forces, dofs);
   // An overflowing load (an extreme Density times Gravity, or a huge Total force) would end in a
   // solver message about restraints; say what it is instead.
   if (!std::isfinite(forces->norm1()))
@@ -124,7 +156,10 @@ void StaticsStep::run(StepContext& context) {
                    "Traction and Pressure for extreme values");
   TpetraVector original_forces(*forces, Teuchos::Copy);
   LinearConstraints constraints(dofs, context.source());
-  add_solid_constraints(conditions_, tie_pairs_, dofs, constraints);
+  if (sections_)
+    add_structural_constraints(conditions_, dofs, constraints);
+  else
+    add_solid_constraints(conditions_, tie_pairs_, dofs, constraints);
   const double load_seconds = clock.seconds();
 
   const auto solver = create_linear_solver(parameters_->sublist("Linear solver"));
@@ -167,7 +202,7 @@ void StaticsStep::run(StepContext& context) {
 
   // Equilibrium: applied loads, reactions and spring forces must cancel; the work of loads and
   // reactions gives the strain energy (the springs' included).
-  auto reaction_sum = component_sums(reactions, comm);
+  auto reaction_sum = component_sums(reactions, dofs);
   const auto spring_forces = ground_spring_forces(springs_, dofs, *u);
   for (const auto& force : spring_forces)
     for (int d = 0; d < 3; ++d)
@@ -226,6 +261,65 @@ void StaticsStep::run(StepContext& context) {
   model.set_field(context.step_name + "/displacement", u);
 }
 
+namespace {
+
+// Sum over the owned nodes of \p nodes of components 0..n-1 of \p data, over all ranks.
+std::vector<double> node_set_sum(const DofMap& dofs, const std::vector<GlobalIndex>& nodes,
+                                 const Teuchos::ArrayRCP<const double>& data, int n) {
+  const MeshPartition& partition = dofs.partition();
+  std::vector<double> sum(n, 0.0);
+  for (GlobalIndex node : nodes) {
+    const LocalIndex local = partition.local_node(node);
+    if (local < 0 || local >= partition.n_owned_nodes())
+      continue;
+    for (int d = 0; d < n; ++d)
+      sum[d] += data[dofs.local_dof(local, d)];
+  }
+  for (double& value : sum)
+    value = partition.comm().sum(value);
+  return sum;
+}
+
+}  // namespace
+
+void StaticsStep::write_probes(StepContext& context, const DofMap& dofs, const TpetraVector& u,
+                               const double* u_overlap) const {
+  const MeshPartition& partition = dofs.partition();
+  const Mesh& mesh = partition.mesh();
+  const Communicator& comm = partition.comm();
+  std::vector<std::vector<GlobalIndex>> probe_sets;
+  for (const auto& probe : conditions_.probes)
+    probe_sets.push_back(mesh.node_set(probe.node_set, "", "").nodes);
+  // Beams report their rotations; solids the stresses extrapolated to the nodes.
+  std::vector<double> probe_stresses;
+  std::vector<std::string> columns{"probe", "nodes", "ux_m", "uy_m", "uz_m"};
+  if (sections_) {
+    columns.insert(columns.end(), {"rx_rad", "ry_rad", "rz_rad"});
+  } else {
+    probe_stresses =
+        node_set_stresses(partition, *materials_, u_overlap, probe_sets, one_point_kappa_ >= 0);
+    columns.insert(columns.end(), {"sxx_Pa", "syy_Pa", "szz_Pa", "sxy_Pa", "syz_Pa", "szx_Pa"});
+  }
+  CsvWriter probes(context.output.staging_path(context.step_name + "_probes.csv"), columns,
+                   comm.is_root());
+  for (std::size_t p = 0; p < conditions_.probes.size(); ++p) {
+    long long count = 0;
+    for (GlobalIndex node : probe_sets[p]) {
+      const LocalIndex local = partition.local_node(node);
+      count += local >= 0 && local < partition.n_owned_nodes();
+    }
+    const double total = static_cast<double>(comm.sum(count));
+    const auto sum = node_set_sum(dofs, probe_sets[p], u.getData(), sections_ ? 6 : 3);
+    std::vector<std::string> row{conditions_.probes[p].name,
+                                 std::to_string(static_cast<long long>(total))};
+    for (double value : sum)
+      row.push_back(CsvWriter::format(value / total));
+    for (std::size_t c = 0; !probe_stresses.empty() && c < 6; ++c)
+      row.push_back(CsvWriter::format(probe_stresses[6 * p + c]));
+    probes.write_row(row);
+  }
+}
+
 void StaticsStep::write_results(StepContext& context, const DofMap& dofs, const TpetraVector& u,
                                 const TpetraVector& reactions, const ContactPairs* contact) const {
   const MeshPartition& partition = dofs.partition();
@@ -241,50 +335,19 @@ void StaticsStep::write_results(StepContext& context, const DofMap& dofs, const 
   TpetraVector u_overlap(dofs.overlap_map());
   dofs.owned_to_overlap(u, u_overlap);
   const double* u_local = u_overlap.getData().getRawPtr();
-  std::vector<std::vector<GlobalIndex>> probe_sets;
-  for (const auto& probe : conditions_.probes)
-    probe_sets.push_back(mesh.node_set(probe.node_set, "", "").nodes);
-  const auto probe_stresses =
-      node_set_stresses(partition, *materials_, u_local, probe_sets, one_point_kappa_ >= 0);
-  CsvWriter probes(context.output.staging_path(name + "_probes.csv"),
-                   {"probe", "nodes", "ux_m", "uy_m", "uz_m", "sxx_Pa", "syy_Pa", "szz_Pa",
-                    "sxy_Pa", "syz_Pa", "szx_Pa"},
-                   root);
-  for (std::size_t p = 0; p < conditions_.probes.size(); ++p) {
-    const auto& probe = conditions_.probes[p];
-    double sum[3] = {0, 0, 0};
-    long long count = 0;
-    for (GlobalIndex node : mesh.node_set(probe.node_set, "", "").nodes) {
-      const LocalIndex local = partition.local_node(node);
-      if (local < 0 || local >= n_owned)
-        continue;
-      ++count;
-      for (int d = 0; d < 3; ++d)
-        sum[d] += u_data[3 * local + d];
-    }
-    const double total = static_cast<double>(comm.sum(count));
-    std::vector<std::string> row{probe.name, std::to_string(static_cast<long long>(total))};
-    for (int d = 0; d < 3; ++d)
-      row.push_back(CsvWriter::format(comm.sum(sum[d]) / total));
-    for (int c = 0; c < 6; ++c)
-      row.push_back(CsvWriter::format(probe_stresses[6 * p + c]));
-    probes.write_row(row);
-  }
+  write_probes(context, dofs, u, u_local);
 
-  CsvWriter reaction_file(context.output.staging_path(name + "_reactions.csv"),
-                          {"condition", "node_set", "Fx_N", "Fy_N", "Fz_N"}, root);
+  std::vector<std::string> reaction_columns{"condition", "node_set", "Fx_N", "Fy_N", "Fz_N"};
+  if (sections_)
+    reaction_columns.insert(reaction_columns.end(), {"Mx_Nm", "My_Nm", "Mz_Nm"});
+  CsvWriter reaction_file(context.output.staging_path(name + "_reactions.csv"), reaction_columns,
+                          root);
   for (const auto& condition : conditions_.displacements) {
-    double sum[3] = {0, 0, 0};
-    for (GlobalIndex node : mesh.node_set(condition.node_set, "", "").nodes) {
-      const LocalIndex local = partition.local_node(node);
-      if (local < 0 || local >= n_owned)
-        continue;
-      for (int d = 0; d < 3; ++d)
-        sum[d] += r_data[3 * local + d];
-    }
+    const auto sum = node_set_sum(dofs, mesh.node_set(condition.node_set, "", "").nodes, r_data,
+                                  sections_ ? 6 : 3);
     std::vector<std::string> row{condition.name, condition.node_set};
-    for (int d = 0; d < 3; ++d)
-      row.push_back(CsvWriter::format(comm.sum(sum[d])));
+    for (double value : sum)
+      row.push_back(CsvWriter::format(value));
     reaction_file.write_row(row);
   }
 
@@ -303,16 +366,24 @@ void StaticsStep::write_results(StepContext& context, const DofMap& dofs, const 
   }
   std::vector<std::string> nodal_names{"displacement_x", "displacement_y", "displacement_z",
                                        "reaction_x",     "reaction_y",     "reaction_z"};
+  if (sections_)
+    nodal_names.insert(nodal_names.end(), {"rotation_x", "rotation_y", "rotation_z", "moment_x",
+                                           "moment_y", "moment_z"});
+  const int base = static_cast<int>(nodal_names.size());
   const int contact_width = contact ? static_cast<int>(contact_nodal_field_names().size()) : 0;
-  const int width = 6 + contact_width;
+  const int width = base + contact_width;
   std::vector<double> owned(static_cast<std::size_t>(width) * n_owned, 0.0);
-  for (std::size_t node = 0; node < static_cast<std::size_t>(n_owned); ++node)
+  for (LocalIndex node = 0; node < n_owned; ++node)
     for (int d = 0; d < 3; ++d) {
-      owned[width * node + d] = u_data[3 * node + d];
-      owned[width * node + 3 + d] = r_data[3 * node + d];
+      owned[width * node + d] = u_data[dofs.local_dof(node, d)];
+      owned[width * node + 3 + d] = r_data[dofs.local_dof(node, d)];
+      if (sections_) {
+        owned[width * node + 6 + d] = u_data[dofs.local_dof(node, 3 + d)];
+        owned[width * node + 9 + d] = r_data[dofs.local_dof(node, 3 + d)];
+      }
     }
   if (contact) {
-    add_contact_nodal_fields(*contact, owned, width, 6);
+    add_contact_nodal_fields(*contact, owned, width, base);
     nodal_names.insert(nodal_names.end(), contact_nodal_field_names().begin(),
                        contact_nodal_field_names().end());
   }

@@ -9,6 +9,7 @@
 #include "framework/app/module.hpp"
 #include "physics/common/contact_settings.hpp"
 #include "physics/common/solid_conditions.hpp"
+#include "physics/common/structural_sections.hpp"
 #include "physics/materials/elastic_material.hpp"
 #include "physics/statics/ground_springs.hpp"
 
@@ -30,11 +31,15 @@ class StaticsStep : public AnalysisStep {
   void write_results(StepContext& context, const DofMap& dofs, const TpetraVector& u,
                      const TpetraVector& reactions, const ContactPairs* contact) const;
   void write_contact(StepContext& context, const ContactPairs& contact) const;
+  void write_probes(StepContext& context, const DofMap& dofs, const TpetraVector& u,
+                    const double* u_overlap) const;
   void write_springs(StepContext& context, const std::vector<std::array<double, 3>>& forces) const;
 
   const Teuchos::ParameterList* parameters_;
   SolidConditions conditions_;
   std::optional<MaterialTable> materials_;
+  std::optional<SectionTable> sections_;  // a model of beams, springs and point masses
+  int dofs_per_node_ = 3;                 // 6 for a structural model
   std::vector<std::vector<std::pair<GlobalIndex, GlobalIndex>>> tie_pairs_;
   std::vector<ContactPairSpec> contact_pairs_;
   std::vector<GroundSpring> springs_;

@@ -1,0 +1,191 @@
+#include "physics/common/structural_assembly.hpp"
+
+#include <Tpetra_Vector.hpp>
+
+#include <stdexcept>
+
+#include "framework/base/error.hpp"
+#include "physics/common/solid_assembly.hpp"
+#include "physics/elements/point_mass.hpp"
+
+namespace railfe {
+
+namespace {
+
+// What one structural matrix takes from each element.
+enum class Matrix { stiffness, mass, damping };
+
+// The element matrix (row-major, 12 × 12 for two nodes, 6 × 6 for one) of element \p nodes of a
+// block with \p section; false when the element adds nothing to this matrix.
+bool element_matrix(Matrix kind, const StructuralSection& section, const MeshPartition& partition,
+                    const LocalIndex* nodes, int n_nodes, bool lumped, double* out) {
+  using RowMajor12 = Eigen::Matrix<double, 12, 12, Eigen::RowMajor>;
+  using RowMajor6 = Eigen::Matrix<double, 6, 6, Eigen::RowMajor>;
+  const auto put12 = [&](const Matrix12& m) { Eigen::Map<RowMajor12>{out} = m; };
+  const auto put6 = [&](const Matrix6& m) { Eigen::Map<RowMajor6>{out} = m; };
+  switch (section.kind) {
+    case StructuralKind::beam: {
+      if (kind == Matrix::damping)
+        return false;
+      const BeamElement beam =
+          make_beam(partition.coordinates(nodes[0]), partition.coordinates(nodes[1]), section.beam);
+      const BeamMass mass = lumped ? BeamMass::lumped : section.beam.mass;
+      put12(kind == Matrix::stiffness ? beam.stiffness() : beam.mass(mass));
+      return true;
+    }
+    case StructuralKind::spring: {
+      if (kind == Matrix::mass)
+        return false;
+      const auto& values =
+          kind == Matrix::stiffness ? section.spring.stiffness : section.spring.damping;
+      const Matrix6 block = spring_block(values, section.spring.axes);
+      if (n_nodes == 1)
+        put6(block);
+      else
+        put12(two_node_matrix(block));
+      return true;
+    }
+    case StructuralKind::point_mass:
+      if (kind != Matrix::mass)
+        return false;
+      put6(point_mass_matrix(section.point.mass, section.point.inertia));
+      return true;
+  }
+  return false;
+}
+
+void require_six(const DofMap& dofs) {
+  // TODO(h-dofs): with the mixed 3/6 DOF map, check the element's nodes carry six DOFs instead.
+  if (dofs.dofs_per_node() != 6)
+    throw std::logic_error("structural elements need 6 DOFs per node");
+}
+
+void add_matrix(FeMatrix& A, Matrix kind, const SectionTable& sections, bool lumped) {
+  require_six(A.dofs());
+  const MeshPartition& partition = A.dofs().partition();
+  alignas(64) double matrix[12 * 12];
+  for (std::size_t b = 0; b < partition.blocks().size(); ++b) {
+    const auto& block = partition.blocks()[b];
+    if (!sections.has_section(block.block))
+      continue;
+    const StructuralSection& section = sections.of_block(block.block);
+    const LocalIndex first = partition.first_local_element(b);
+    for (LocalIndex e = 0; e < block.n_elements(); ++e) {
+      const LocalIndex* nodes = block.connectivity.data() + block.offsets[e];
+      const int n_nodes = static_cast<int>(block.offsets[e + 1] - block.offsets[e]);
+      if (element_matrix(kind, section, partition, nodes, n_nodes, lumped, matrix))
+        A.add_element(first + e, matrix);
+    }
+  }
+}
+
+}  // namespace
+
+void add_structural_stiffness(FeMatrix& K, const SectionTable& sections) {
+  add_matrix(K, Matrix::stiffness, sections, false);
+}
+
+void add_structural_mass(FeMatrix& M, const SectionTable& sections, bool lumped) {
+  add_matrix(M, Matrix::mass, sections, lumped);
+}
+
+void add_structural_damping(FeMatrix& C, const SectionTable& sections) {
+  add_matrix(C, Matrix::damping, sections, false);
+}
+
+void assemble_structural_stiffness(FeMatrix& K, const SectionTable& sections) {
+  K.begin_assembly();
+  add_structural_stiffness(K, sections);
+  K.end_assembly();
+}
+
+void assemble_structural_mass(FeMatrix& M, const SectionTable& sections, bool lumped) {
+  M.begin_assembly();
+  add_structural_mass(M, sections, lumped);
+  M.end_assembly();
+}
+
+void assemble_structural_damping(FeMatrix& C, const SectionTable& sections) {
+  C.begin_assembly();
+  add_structural_damping(C, sections);
+  C.end_assembly();
+}
+
+void add_structural_gravity(const SectionTable& sections, const DofMap& dofs,
+                            const std::array<double, 3>& gravity, double* overlap_forces) {
+  require_six(dofs);
+  const MeshPartition& partition = dofs.partition();
+  alignas(64) double matrix[12 * 12];
+  for (const auto& block : partition.blocks()) {
+    if (!sections.has_section(block.block))
+      continue;
+    const StructuralSection& section = sections.of_block(block.block);
+    for (LocalIndex e = 0; e < block.n_elements(); ++e) {
+      const LocalIndex* nodes = block.connectivity.data() + block.offsets[e];
+      const int n_nodes = static_cast<int>(block.offsets[e + 1] - block.offsets[e]);
+      if (!element_matrix(Matrix::mass, section, partition, nodes, n_nodes, false, matrix))
+        continue;
+      const int n = 6 * n_nodes;
+      for (int i = 0; i < n; ++i) {
+        double sum = 0;
+        for (int a = 0; a < n_nodes; ++a)
+          for (int d = 0; d < 3; ++d)
+            sum += matrix[i * n + 6 * a + d] * gravity[d];
+        overlap_forces[dofs.local_dof(nodes[i / 6], i % 6)] += sum;
+      }
+    }
+  }
+}
+
+void assemble_structural_loads(const SolidConditions& conditions, const SectionTable& sections,
+                               const DofMap& dofs, TpetraVector& owned_forces) {
+  const MeshPartition& partition = dofs.partition();
+  const Mesh& mesh = partition.mesh();
+  TpetraVector overlap(dofs.overlap_map());
+  {
+    auto f = overlap.getDataNonConst();
+    const auto& g = conditions.gravity;
+    if (g[0] != 0 || g[1] != 0 || g[2] != 0)
+      add_structural_gravity(sections, dofs, g, f.getRawPtr());
+    for (const auto& force : conditions.nodal_forces) {
+      const NodeSet& set = mesh.node_set(force.node_set, "", "");
+      long long active = 0;
+      for (GlobalIndex node : set.nodes)
+        active += partition.node_ranks()[node] >= 0;
+      for (GlobalIndex node : set.nodes) {
+        const LocalIndex local = partition.local_node(node);
+        if (local < 0 || local >= partition.n_owned_nodes())
+          continue;
+        for (int d = 0; d < 3; ++d) {
+          f[dofs.local_dof(local, d)] += force.total_force[d] / active;
+          f[dofs.local_dof(local, 3 + d)] += force.total_moment[d] / active;
+        }
+      }
+    }
+  }
+  dofs.overlap_to_owned_sum(overlap, owned_forces);
+}
+
+void add_structural_constraints(const SolidConditions& conditions, const DofMap& dofs,
+                                LinearConstraints& constraints) {
+  prescribe_displacements(conditions, dofs, constraints);
+  constraints.finalize();
+}
+
+void check_structural_conditions(const SolidConditions& conditions, const std::string& deck,
+                                 const std::string& path) {
+  const auto refuse = [&](const std::string& what, const std::string& name) {
+    throw_input_error(deck, path + "/" + what + "/" + name,
+                      "needs solid (hex8) elements, and the model has only beams, springs and "
+                      "point masses",
+                      "Nodal forces (with Total moment) and Gravity on structural models");
+  };
+  if (!conditions.surface_loads.empty())
+    refuse("Surface loads", conditions.surface_loads.front().name);
+  if (!conditions.centrifugal_loads.empty())
+    refuse("Centrifugal loads", conditions.centrifugal_loads.front().name);
+  if (!conditions.ties.empty())
+    refuse("Ties", conditions.ties.front().name);
+}
+
+}  // namespace railfe
