@@ -199,8 +199,13 @@ std::vector<double> LinearConstraints::zero_prescribed_couplings(TpetraMatrix& A
       const LocalIndex diagonal_column =
           column_map.getLocalElement(row_map.getGlobalElement(static_cast<LocalIndex>(row)));
       for (auto k = begin; k < end; ++k) {
-        if (keep_diagonal && local.graph.entries(k) == diagonal_column && local.values(k) != 0.0) {
-          diagonal[row] = local.values(k);
+        if (keep_diagonal && local.graph.entries(k) == diagonal_column) {
+          // A DOF without stiffness of its own (a rotation a spring leaves free) keeps the
+          // equation 1 · u_i = value instead of an empty row.
+          if (local.values(k) != 0.0)
+            diagonal[row] = local.values(k);
+          else
+            local.values(k) = 1.0;
         } else {
           local.values(k) = 0.0;
         }

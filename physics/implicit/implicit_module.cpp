@@ -4,6 +4,8 @@
 #include "physics/common/solid_conditions.hpp"
 #include "physics/implicit/implicit_settings.hpp"
 #include "physics/implicit/implicit_step.hpp"
+#include "physics/implicit/moving_contact_settings.hpp"
+#include "physics/implicit/moving_loads.hpp"
 
 namespace railfe {
 
@@ -15,6 +17,8 @@ ParameterSpec implicit_parameters() {
       "M a + C v + K u = f(t).");
   add_solid_condition_parameters(spec);
   add_implicit_parameters(spec);
+  add_moving_load_parameters(spec);
+  add_moving_contact_parameters(spec);
   spec.sublist("Linear solver", linear_solver_parameters("cholmod"),
                "How each Newton correction is solved (the matrix is factored once per step size "
                "for a linear model).");

@@ -11,6 +11,9 @@
 #include "framework/base/resources.hpp"
 #include "framework/output/csv_writer.hpp"
 #include "physics/common/solid_assembly.hpp"
+#include "physics/common/structural_assembly.hpp"
+#include "physics/implicit/beam_paths.hpp"
+#include "physics/implicit/constrained_stepper.hpp"
 #include "physics/implicit/implicit_output.hpp"
 #include "physics/implicit/implicit_system.hpp"
 
@@ -123,6 +126,16 @@ void check_energy_bounded(const ImplicitEnergy& energy, double largest_input, do
       ". Rows up to the last step are kept.");
 }
 
+// Whether any spring-damper section of \p sections damps.
+bool has_structural_damping(const SectionTable& sections) {
+  for (const StructuralSection& section : sections.sections())
+    if (section.kind == StructuralKind::spring)
+      for (double c : section.spring.damping)
+        if (c > 0)
+          return true;
+  return false;
+}
+
 double dot_difference(const std::vector<double>& f0, const std::vector<double>& f1,
                       const std::vector<double>& u0, const std::vector<double>& u1) {
   double sum = 0;
@@ -142,8 +155,42 @@ void ImplicitStep::check(const CheckContext& context) {
   conditions_ = read_solid_conditions(*parameters_, deck, context.path);
   check_solid_conditions(conditions_, mesh, deck, context.path);
   refuse_unsupported(conditions_, deck, context.path);
-  materials_ = solid_materials(context.model, "the implicit step '" + context.step_name + "'",
-                               EnhancedStrainSupport::supported);
+  const std::string step = "the implicit step '" + context.step_name + "'";
+  materials_ = solid_materials(context.model, step, EnhancedStrainSupport::supported);
+  sections_.reset();
+  dofs_per_node_ = 3;
+  if (has_structural_blocks(mesh)) {
+    if (has_solid_blocks(mesh))
+      throw_input_error(deck, "Mesh",
+                        "has both solid (hex8) and beam, spring or point-mass blocks: " + step +
+                            " needs mixed DOFs per node, which are not available yet",
+                        "a model of solids alone, or of beams, springs and point masses alone");
+    sections_ = structural_sections(context.model, step);
+    dofs_per_node_ = 6;
+    check_structural_conditions(conditions_, deck, context.path);
+  } else {
+    refuse_rotations(conditions_, deck, context.path, "a model of solids");
+  }
+  moving_loads_ = read_moving_loads(*parameters_, deck, context.path);
+  for (const MovingLoadSpec& load : moving_loads_) {
+    const std::string where = context.path + "/Moving loads/" + load.name + "/Path";
+    if (!sections_)
+      throw_input_error(deck, where, "needs beams, and the model has none",
+                        "a model of beams (Mesh Type line and Sections)");
+    chain_of_blocks(mesh, load.blocks, deck, where);
+  }
+  contacts_ = read_moving_contacts(*parameters_, context.model.deck(), context.path);
+  if (!contacts_.empty()) {
+    if (!sections_)
+      throw_input_error(deck, context.path + "/Moving contacts/" + contacts_.front().name,
+                        "needs beams to run on, and the model has none",
+                        "a model of beams, springs and point masses (Mesh Type line, Sections)");
+    check_moving_contacts(contacts_, mesh, settings_.end_time, deck, context.path);
+  } else if (!parameters_->getEntry("Constraint solver").isDefault()) {
+    throw_input_error(deck, context.path + "/Constraint solver",
+                      "is used only with Moving contacts, and the step has none",
+                      "remove it, or add a moving contact");
+  }
   if (!settings_.start_from.empty() &&
       !is_earlier_statics_step(context.model.deck().parameters->sublist("Steps"),
                                settings_.start_from, context.step_name))
@@ -158,7 +205,7 @@ void ImplicitStep::check(const CheckContext& context) {
     const auto& nodes = mesh.node_set(history.node_set, deck, path + "/Node set").nodes;
     if (nodes.empty())
       throw_input_error(deck, path + "/Node set", "is empty", "a node set with nodes");
-    if (history.component >= 3)
+    if (history.component >= dofs_per_node_)
       throw_input_error(deck, path + "/Component",
                         "is a rotation, but the nodes of this model carry translations only",
                         "x, y or z");
@@ -167,26 +214,51 @@ void ImplicitStep::check(const CheckContext& context) {
 
 void ImplicitStep::run(StepContext& context) {
   Model& model = context.model;
-  const DofMap& dofs = model.dofs(3);
+  const DofMap& dofs = model.dofs(dofs_per_node_);
   const Communicator& comm = model.comm();
   const std::string section = "Step " + context.step_name + " (implicit)";
   const ImplicitSettings& settings = settings_;
   Stopwatch clock;
 
   FeMatrix stiffness(dofs), mass(dofs);
-  assemble_elastic_stiffness(stiffness, *materials_);
-  assemble_mass(mass, *materials_, settings.lumped_mass);
   auto load = Teuchos::rcp(new TpetraVector(dofs.owned_map()));
-  assemble_solid_loads(conditions_, *materials_, dofs, *load);
+  Teuchos::RCP<TpetraMatrix> damping_matrix;
+  std::unique_ptr<FeMatrix> damping;
+  if (sections_) {
+    assemble_structural_stiffness(stiffness, *sections_);
+    assemble_structural_mass(mass, *sections_, settings.lumped_mass);
+    assemble_structural_loads(conditions_, *sections_, dofs, *load);
+    if (has_structural_damping(*sections_)) {
+      damping = std::make_unique<FeMatrix>(dofs);
+      assemble_structural_damping(*damping, *sections_);
+      damping_matrix = damping->matrix();
+    }
+  } else {
+    assemble_elastic_stiffness(stiffness, *materials_);
+    assemble_mass(mass, *materials_, settings.lumped_mass);
+    assemble_solid_loads(conditions_, *materials_, dofs, *load);
+  }
   if (!std::isfinite(load->norm1()))
     throw RunError(context.path +
                    ": the assembled load is not finite (NaN or inf): check "
                    "Gravity with the materials' Density and every load's values");
   const std::vector<LocalIndex> fixed = fixed_dofs(conditions_, dofs);
   ImplicitSystem system(
-      dofs, {stiffness.matrix(), mass.matrix(), Teuchos::null, load}, fixed,
+      dofs, {stiffness.matrix(), mass.matrix(), damping_matrix, load}, fixed,
       Expression(settings.load_function, context.source(), context.path + "/Load function"),
       create_linear_solver(parameters_->sublist("Linear solver")), elasticity_traits(dofs));
+  std::unique_ptr<MovingLoads> moving;
+  if (!moving_loads_.empty()) {
+    const MeshPartition& partition = dofs.partition();
+    auto owned_dof = [&](GlobalIndex node, int component) -> long {
+      const LocalIndex local = partition.local_node(node);
+      return local < 0 || local >= partition.n_owned_nodes() ? -1
+                                                             : dofs.local_dof(local, component);
+    };
+    moving = std::make_unique<MovingLoads>(moving_loads_, partition.mesh(), *sections_, owned_dof,
+                                           context.source(), context.path);
+    system.add_time_load([&moving](double t, double* f) { moving->add(t, f); });
+  }
   const double assembly_seconds = clock.seconds();
 
   const std::size_t n = system.n_unknowns();
@@ -197,6 +269,30 @@ void ImplicitStep::run(StepContext& context) {
 
   HhtIntegrator integrator(settings.scheme, system, settings.newton, settings.rayleigh,
                            settings.cut_back);
+  std::unique_ptr<ImplicitStepper> stepper;
+  ConstrainedStepper* constrained = nullptr;
+  if (contacts_.empty()) {
+    stepper = std::make_unique<DistributedStepper>(integrator);
+  } else {
+    const LinearModelMatrices matrices{stiffness.matrix(), mass.matrix(), damping_matrix, load};
+    ConstrainedSetup setup;
+    setup.dofs = &dofs;
+    setup.matrices = &matrices;
+    setup.fixed = &fixed;
+    setup.load_function = settings.load_function;
+    setup.moving_loads = &moving_loads_;
+    setup.contacts = &contacts_;
+    setup.sections = &*sections_;
+    setup.settings = &settings;
+    setup.solver = parameters_->get<std::string>("Constraint solver");
+    setup.deck = context.source();
+    setup.path = context.path;
+    auto owned = std::make_unique<ConstrainedStepper>(setup);
+    constrained = owned.get();
+    stepper = std::move(owned);
+    constrained->open_contact_file(
+        context.output.staging_path(context.step_name + "_contacts.csv"));
+  }
   const bool root = comm.is_root();
   const std::string path = context.path;
   integrator.on_cut_back([&](const CutBack& cut) {
@@ -211,7 +307,9 @@ void ImplicitStep::run(StepContext& context) {
                  "railfe: warning: %s: Newmark with Beta %.6g < Gamma/2 is only conditionally "
                  "stable; the run stops (exit status 2) if the energy balance shows it diverging\n",
                  path.c_str(), settings.scheme.beta);
-  integrator.initialize(0.0, u.data(), v.data(), a.data());
+  stepper->initialize(0.0, u.data(), v.data(), a.data());
+  if (constrained)
+    constrained->write_contacts(0.0);
 
   ImplicitRecorder recorder(settings, dofs, context.output, context.step_name,
                             model.deck().parameters->get<std::string>("Title"),
@@ -262,7 +360,7 @@ void ImplicitStep::run(StepContext& context) {
     u_old = u;
     int substeps = 0;
     try {
-      substeps = integrator.advance(time, step_size, u.data(), v.data(), a.data());
+      substeps = stepper->advance(time, step_size, u.data(), v.data(), a.data());
     } catch (const StepNotConverged& failure) {
       std::string history;
       for (double r : failure.residuals)
@@ -276,7 +374,9 @@ void ImplicitStep::run(StepContext& context) {
     most_substeps = std::max(most_substeps, substeps);
     const double dt = step_size;
     time = next_time;
-    const NewtonStatistics& statistics = integrator.newton_statistics();
+    if (constrained)
+      constrained->write_contacts(next_time);
+    const NewtonStatistics statistics = stepper->statistics();
     const int iterations = static_cast<int>(statistics.iterations - iterations_before);
     iterations_before = statistics.iterations;
     system.external_force(time, next_force.data());
@@ -305,7 +405,10 @@ void ImplicitStep::run(StepContext& context) {
   recorder.finish();
   const double stepping_seconds = stepping.seconds();
 
-  const NewtonStatistics& statistics = integrator.newton_statistics();
+  const NewtonStatistics statistics = stepper->statistics();
+  const double separations = constrained ? constrained->write_events(context.output.staging_path(
+                                               context.step_name + "_contact_events.csv"))
+                                         : 0.0;
   const double scale = std::max(
       {energy.initial + std::abs(energy.external_work), energy.kinetic + energy.strain, 1e-300});
   context.summary.add(section, "degrees of freedom", static_cast<double>(dofs.n_global_dofs()));
@@ -318,9 +421,18 @@ void ImplicitStep::run(StepContext& context) {
   context.summary.add(section, "most iterations in a step",
                       static_cast<double>(statistics.most_iterations));
   context.summary.add(section, "factorizations", static_cast<double>(statistics.factorizations));
-  context.summary.add(section, "cut-backs", static_cast<double>(integrator.n_cut_backs()));
+  context.summary.add(section, "cut-backs", static_cast<double>(stepper->n_cut_backs()));
   context.summary.add(section, "most sub-steps in a step", static_cast<double>(most_substeps));
-  context.summary.add(section, "solver", system.last_solve().method);
+  if (constrained) {
+    context.summary.add(section, "moving contacts", static_cast<double>(contacts_.size()));
+    context.summary.add(section, "separations", separations);
+    context.summary.add(section, "structure factorizations",
+                        constrained->structure_factorizations());
+    context.summary.add(section, "constraint solver",
+                        parameters_->get<std::string>("Constraint solver"));
+  } else {
+    context.summary.add(section, "solver", system.last_solve().method);
+  }
   context.summary.add(section, "backward error (last solve)", system.last_solve().backward_error);
   context.summary.add(section, "largest |numerical dissipation| / energy",
                       largest_dissipation / scale);

@@ -6,7 +6,10 @@
 
 #include "framework/app/module.hpp"
 #include "physics/common/solid_conditions.hpp"
+#include "physics/common/structural_sections.hpp"
 #include "physics/implicit/implicit_settings.hpp"
+#include "physics/implicit/moving_contact_settings.hpp"
+#include "physics/implicit/moving_loads.hpp"
 #include "physics/materials/elastic_material.hpp"
 
 namespace railfe {
@@ -24,6 +27,10 @@ class ImplicitStep : public AnalysisStep {
   ImplicitSettings settings_;
   SolidConditions conditions_;
   std::optional<MaterialTable> materials_;
+  std::optional<SectionTable> sections_;  // for a model of beams, springs and point masses
+  int dofs_per_node_ = 3;
+  std::vector<MovingLoadSpec> moving_loads_;
+  std::vector<MovingContactSpec> contacts_;
 };
 
 }  // namespace railfe

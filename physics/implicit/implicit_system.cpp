@@ -55,6 +55,8 @@ void ImplicitSystem::external_force(double time, double* force) {
   const auto load = matrices_.load->getData();
   for (std::size_t i = 0; i < n_; ++i)
     force[i] = scale * load[i];
+  if (time_load_)
+    time_load_(time, force);
   mask(force);
 }
 

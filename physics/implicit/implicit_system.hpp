@@ -6,6 +6,7 @@
 /// residual and the energy see the free DOFs only) and eliminated symmetrically from the
 /// matrix, which therefore stays symmetric positive definite for CHOLMOD and CG.
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -43,6 +44,9 @@ class ImplicitSystem : public SecondOrderSystem {
   void solve(const double* rhs, double* x) override;
   double dot(const double* x, const double* y) const override;
 
+  /// Adds \p load(t, owned_force) to the external force (moving loads), before fixed DOFs are
+  /// masked.
+  void add_time_load(std::function<void(double, double*)> load) { time_load_ = std::move(load); }
   /// ½ vᵀ M v (J), over every rank.
   double kinetic_energy(const double* v);
   /// ½ uᵀ K u (J), over every rank.
@@ -64,6 +68,7 @@ class ImplicitSystem : public SecondOrderSystem {
   LinearModelMatrices matrices_;
   std::vector<LocalIndex> fixed_;
   Expression load_scale_;
+  std::function<void(double, double*)> time_load_;
   std::unique_ptr<LinearSolver> solver_;
   ProblemTraits traits_;
   Teuchos::RCP<TpetraMatrix> effective_;

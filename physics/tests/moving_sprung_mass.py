@@ -9,9 +9,11 @@ preload. With q_n the modal amplitudes (phi_n = sin(n pi x / L)):
     q_n'' + w_n^2 q_n = 2 / (m L) phi_n(v t) F,   F = -M g + k (z - u(v t)),
     z'' = -k (z - u(v t)) / M,
 z the body's displacement from its static position, u the deflection (up positive).
-Usage: moving_sprung_mass.py STUDY_EXE WORK_DIR [key=value ...]; exits 1 when the midspan
-deflection or the body acceleration (peaks and whole histories, normalised by the peak) differ
-from the modal solution by more than 1 %.
+Usage: moving_sprung_mass.py STUDY_EXE WORK_DIR [key=value ...]
+       moving_sprung_mass.py --histories CSV   (a railfe deck's <step>_histories.csv with the
+                                                columns time_s, midspan_m and body_m/s2)
+Exits 1 when the midspan deflection or the body acceleration (peaks and whole histories,
+normalised by the peak) differ from the modal solution by more than 1 %.
 """
 import csv
 import os
@@ -56,17 +58,22 @@ def read(path):
 
 
 def main():
-    exe, work = sys.argv[1], sys.argv[2]
-    os.makedirs(work, exist_ok=True)
-    out = os.path.join(work, "sprung_mass.csv")
-    args = ["elements=20", "dt=0.0005", "alpha=0", "csv=" + out] + sys.argv[3:]
-    subprocess.run([exe] + args, check=True, stdout=subprocess.DEVNULL)
-    fe = read(out)
-    midspan, acceleration = modal_solution(fe["time"])
+    if sys.argv[1] == "--histories":
+        deck = read(sys.argv[2])
+        time, deflection, body = deck["time_s"], deck["midspan_m"], deck["body_m/s2"]
+    else:
+        exe, work = sys.argv[1], sys.argv[2]
+        os.makedirs(work, exist_ok=True)
+        out = os.path.join(work, "sprung_mass.csv")
+        args = ["elements=20", "dt=0.0005", "alpha=0", "csv=" + out] + sys.argv[3:]
+        subprocess.run([exe] + args, check=True, stdout=subprocess.DEVNULL)
+        fe = read(out)
+        time, deflection, body = (fe["time"], fe["midspan_deflection"],
+                                  fe["vehicle_acceleration"])
+    midspan, acceleration = modal_solution(time)
     failed = False
-    for name, computed, reference in (("midspan deflection", fe["midspan_deflection"], midspan),
-                                      ("body acceleration", fe["vehicle_acceleration"],
-                                       acceleration)):
+    for name, computed, reference in (("midspan deflection", deflection, midspan),
+                                      ("body acceleration", body, acceleration)):
         peak_ref = np.max(np.abs(reference))
         peak_error = abs(np.max(np.abs(computed)) - peak_ref) / peak_ref
         history_error = np.max(np.abs(computed - reference)) / peak_ref
