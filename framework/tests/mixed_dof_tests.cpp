@@ -11,6 +11,7 @@
 #include "framework/assembly/fe_matrix.hpp"
 #include "framework/base/error.hpp"
 #include "framework/mesh/box_generator.hpp"
+#include "framework/testing/assembly_testing.hpp"
 
 namespace railfe {
 namespace {
@@ -24,23 +25,14 @@ Mesh mixed_mesh() {
   Mesh mesh = generate_box(spec);
   for (double x : {1.5, 0.5, 0.5, 2.5, 0.5, 0.5, -0.5, 0.0, 0.0})
     mesh.coordinates.push_back(x);
-  auto add_block = [&](const std::string& name, ElementType type,
-                       const std::vector<GlobalIndex>& nodes) {
-    ElementBlock block;
-    block.name = name;
-    block.id = static_cast<int>(mesh.blocks.size()) + 1;
-    block.type = type;
-    block.add_element(nodes.data(), static_cast<int>(nodes.size()));
-    mesh.blocks.push_back(block);
-  };
-  add_block("beam", ElementType::beam2, {36, 37});
+  using testing::add_block;
+  add_block(mesh, "beam", ElementType::beam2, {36, 37});
   std::vector<GlobalIndex> link{36};
   for (GlobalIndex node : mesh.node_set("xmax", "", "").nodes)
     link.push_back(node);
-  add_block("link", ElementType::rigid_link, link);
-  add_block("spring", ElementType::spring2, {0, 38});
-  add_block("mass", ElementType::point_mass, {37});
-  mesh.number_blocks();
+  add_block(mesh, "link", ElementType::rigid_link, link);
+  add_block(mesh, "spring", ElementType::spring2, {0, 38});
+  add_block(mesh, "mass", ElementType::point_mass, {37});
   return mesh;
 }
 
@@ -96,13 +88,7 @@ TEST(DofMap, UniformMeshesKeepTheUniformLayout) {
 TEST(DofMap, BeamSharingASolidNodeIsRefused) {
   BoxSpec spec;
   Mesh mesh = generate_box(spec);
-  ElementBlock beam;
-  beam.name = "beam";
-  beam.type = ElementType::beam2;
-  const GlobalIndex nodes[2] = {1, 7};
-  beam.add_element(nodes, 2);
-  mesh.blocks.push_back(beam);
-  mesh.number_blocks();
+  testing::add_block(mesh, "beam", ElementType::beam2, {1, 7});
   try {
     DofMap::mesh_node_dofs(mesh);
     ADD_FAILURE() << "a beam on a solid node accepted";
@@ -155,7 +141,7 @@ TEST(FeMatrix, MixedLayoutEqualsTheDenseSumOfElementMatrices) {
   }
   const auto A = matrix.matrix();
 
-  std::map<GlobalIndex, std::map<GlobalIndex, double>> reference;
+  testing::DenseRows reference;
   for (const auto& block : mesh.blocks) {
     for (GlobalIndex e = 0; e < block.n_elements(); ++e) {
       const auto list = element_dofs(block.element_nodes(e), block.n_element_nodes(e));
@@ -165,22 +151,7 @@ TEST(FeMatrix, MixedLayoutEqualsTheDenseSumOfElementMatrices) {
       }
     }
   }
-  const auto row_map = A->getRowMap();
-  long long rows_checked = 0;
-  for (std::size_t i = 0; i < row_map->getNodeNumElements(); ++i) {
-    const GlobalIndex row = row_map->getGlobalElement(static_cast<LocalIndex>(i));
-    std::size_t n = A->getNumEntriesInGlobalRow(row);
-    Teuchos::Array<GlobalIndex> columns(n);
-    Teuchos::Array<double> row_values(n);
-    A->getGlobalRowCopy(row, columns(), row_values(), n);
-    const auto& expected = reference.at(row);
-    EXPECT_EQ(n, expected.size()) << "row " << row;
-    for (std::size_t k = 0; k < n; ++k) {
-      const double want = expected.at(columns[k]);
-      EXPECT_NEAR(row_values[k], want, 1e-12 * std::abs(want) + 1e-12) << row << "," << columns[k];
-    }
-    ++rows_checked;
-  }
+  const long long rows_checked = testing::expect_rows_equal(*A, reference);
   EXPECT_EQ(comm.sum(rows_checked), 3 * 36 + 6 * 3);
 }
 

@@ -12,7 +12,7 @@
 #include "framework/assembly/fe_matrix.hpp"
 #include "framework/base/error.hpp"
 #include "framework/mesh/box_generator.hpp"
-#include "framework/solvers/direct_solvers.hpp"
+#include "framework/testing/assembly_testing.hpp"
 #include "physics/common/rigid_links.hpp"
 #include "physics/common/solid_assembly.hpp"
 #include "physics/common/solid_beam_ties.hpp"
@@ -28,16 +28,7 @@ GlobalIndex add_node(Mesh& mesh, const Eigen::Vector3d& x) {
   return mesh.n_nodes() - 1;
 }
 
-void add_block(Mesh& mesh, const std::string& name, ElementType type,
-               const std::vector<GlobalIndex>& nodes) {
-  ElementBlock block;
-  block.name = name;
-  block.id = static_cast<int>(mesh.blocks.size()) + 1;
-  block.type = type;
-  block.add_element(nodes.data(), static_cast<int>(nodes.size()));
-  mesh.blocks.push_back(block);
-  mesh.number_blocks();
-}
+using testing::add_block;
 
 // Assembles the stiffness of every local hex8 element (enhanced strain or full integration);
 // other elements only shape the sparsity.
@@ -81,13 +72,7 @@ TpetraVector solve(const Teuchos::RCP<TpetraMatrix>& K, const std::vector<double
     for (std::size_t i = 0; i < forces.size(); ++i)
       data[i] = forces[i];
   }
-  auto system = constraints.apply(K, loads);
-  auto solver = make_cholmod_solver(1e-12);
-  solver->setup(system, ProblemTraits{});
-  TpetraVector u(dofs.owned_map());
-  solver->solve(loads, u);
-  constraints.recover(u);
-  return u;
+  return testing::solve_constrained(K, loads, constraints);
 }
 
 // The components of global node \p node in owned vector \p u, on every rank.
