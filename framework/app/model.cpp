@@ -29,6 +29,12 @@ const DofMap& Model::dofs(int dofs_per_node) {
   return *map;
 }
 
+const DofMap& Model::mesh_dofs() {
+  if (!mesh_dofs_)
+    mesh_dofs_ = std::make_unique<DofMap>(DofMap::for_mesh(*partition_));
+  return *mesh_dofs_;
+}
+
 void Model::set_field(const std::string& name, Teuchos::RCP<TpetraVector> field) {
   fields_[name] = std::move(field);
 }

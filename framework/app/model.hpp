@@ -40,6 +40,9 @@ class Model {
   bool has_section(const std::string& name) const;
   /// The DOF map with \p dofs_per_node unknowns per node, made on first use (collective then).
   const DofMap& dofs(int dofs_per_node);
+  /// The DOF map the mesh asks for (DofMap::for_mesh(): 3 at solid nodes, 6 at beam and body
+  /// nodes), made on first use (collective then).
+  const DofMap& mesh_dofs();
   /// Stores a field under \p name (replacing one of the same name).
   void set_field(const std::string& name, Teuchos::RCP<TpetraVector> field);
   /// The field called \p name, or null.
@@ -50,7 +53,8 @@ class Model {
   std::unique_ptr<Mesh> mesh_;
   std::unique_ptr<MeshPartition> partition_;
   PartitionMethod method_;
-  std::map<int, std::unique_ptr<DofMap>> dof_maps_;
+  std::map<int, std::unique_ptr<DofMap>> dof_maps_;  // by DOFs per node
+  std::unique_ptr<DofMap> mesh_dofs_;
   std::map<std::string, Teuchos::RCP<TpetraVector>> fields_;
 };
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 #include <unordered_map>
 
 #include "framework/assembly/tpetra_compat.hpp"
@@ -19,34 +20,66 @@ struct FeMatrix::Storage {
 
 FeMatrix::FeMatrix(const DofMap& dofs) : dofs_(&dofs), storage_(std::make_unique<Storage>()) {
   build_sparsity();
-  const int dpn = dofs.dofs_per_node();
   const MeshPartition& partition = dofs.partition();
   const LocalIndex n_nodes = partition.n_local_nodes();
 
-  Kokkos::DualView<std::size_t*, Tpetra::FECrsGraph<>::device_type> counts("row counts",
-                                                                           dpn * n_nodes);
+  // Columns: the local nodes (owned, then ghosts), then the column-only nodes that reach owned
+  // rows through other ranks' elements, each node's components consecutive. Column index of
+  // component c of column node n: column_starts[n] + c (dpn·n + c in a uniform layout).
+  std::vector<LocalIndex> column_starts{0};
+  std::vector<GlobalIndex> column_dofs;
+  column_dofs.reserve(static_cast<std::size_t>(dofs.max_dofs_per_node()) *
+                      (n_nodes + column_only_nodes_.size()));
+  auto add_column_node = [&](GlobalIndex node) {
+    const int count = dofs.dofs_of_global_node(node);
+    for (int c = 0; c < count; ++c)
+      column_dofs.push_back(dofs.global_dof(node, c));
+    column_starts.push_back(static_cast<LocalIndex>(column_dofs.size()));
+  };
+  for (LocalIndex node = 0; node < n_nodes; ++node)
+    add_column_node(partition.global_node(node));
+  for (GlobalIndex node : column_only_nodes_)
+    add_column_node(node);
+
+  // Where each neighbour's entries start within a row (mixed layouts; dpn·k when uniform).
+  if (!dofs.is_uniform()) {
+    neighbour_starts_.resize(adjacency_.size());
+    for (LocalIndex node = 0; node < n_nodes; ++node) {
+      LocalIndex start = 0;
+      for (LocalIndex k = adjacency_offsets_[node]; k < adjacency_offsets_[node + 1]; ++k) {
+        neighbour_starts_[k] = start;
+        start += column_starts[adjacency_[k] + 1] - column_starts[adjacency_[k]];
+      }
+    }
+  }
+
+  const LocalIndex n_rows = dofs.n_overlap_dofs();
+  Kokkos::DualView<std::size_t*, Tpetra::FECrsGraph<>::device_type> counts("row counts", n_rows);
   auto host_counts = counts.h_view;
+  std::vector<LocalIndex> columns;
+  auto node_columns = [&](LocalIndex node) {
+    columns.clear();
+    for (LocalIndex k = adjacency_offsets_[node]; k < adjacency_offsets_[node + 1]; ++k) {
+      for (LocalIndex c = column_starts[adjacency_[k]]; c < column_starts[adjacency_[k] + 1]; ++c)
+        columns.push_back(c);
+    }
+  };
   for (LocalIndex node = 0; node < n_nodes; ++node) {
-    const std::size_t degree = adjacency_offsets_[node + 1] - adjacency_offsets_[node];
-    for (int c = 0; c < dpn; ++c)
-      host_counts(dpn * node + c) = dpn * degree;
+    const LocalIndex degree = adjacency_offsets_[node + 1] - adjacency_offsets_[node];
+    std::size_t row_length = 0;
+    if (dofs.is_uniform()) {
+      row_length = static_cast<std::size_t>(dofs.dofs_per_node()) * degree;
+    } else {
+      for (LocalIndex k = adjacency_offsets_[node]; k < adjacency_offsets_[node + 1]; ++k)
+        row_length += column_starts[adjacency_[k] + 1] - column_starts[adjacency_[k]];
+    }
+    for (int c = 0; c < dofs.dofs_of_node(node); ++c)
+      host_counts(dofs.local_dof(node, c)) = row_length;
   }
   counts.modify_host();
   counts.sync_device();
   Kokkos::DualView<const std::size_t*, Tpetra::FECrsGraph<>::device_type> const_counts = counts;
 
-  // Columns: the local nodes (owned, then ghosts), then the column-only nodes that reach owned
-  // rows through other ranks' elements. Column index of component c of column node n: dpn·n + c.
-  std::vector<GlobalIndex> column_dofs;
-  column_dofs.reserve(static_cast<std::size_t>(dpn) * (n_nodes + column_only_nodes_.size()));
-  for (LocalIndex node = 0; node < n_nodes; ++node) {
-    for (int c = 0; c < dpn; ++c)
-      column_dofs.push_back(dpn * partition.global_node(node) + c);
-  }
-  for (GlobalIndex node : column_only_nodes_) {
-    for (int c = 0; c < dpn; ++c)
-      column_dofs.push_back(dpn * node + c);
-  }
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
   auto column_map = Teuchos::rcp(new TpetraMap(
       invalid, Teuchos::ArrayView<const GlobalIndex>(column_dofs.data(), column_dofs.size()), 0,
@@ -55,20 +88,17 @@ FeMatrix::FeMatrix(const DofMap& dofs) : dofs_(&dofs), storage_(std::make_unique
   storage_->graph = Teuchos::rcp(new Tpetra::FECrsGraph<>(
       dofs.owned_map(), dofs.overlap_map(), column_map, const_counts, dofs.importer()));
   Tpetra::beginAssembly(*storage_->graph);
-  std::vector<LocalIndex> columns;
   for (LocalIndex node = 0; node < n_nodes; ++node) {
-    columns.clear();
-    for (LocalIndex k = adjacency_offsets_[node]; k < adjacency_offsets_[node + 1]; ++k) {
-      for (int c = 0; c < dpn; ++c)
-        columns.push_back(dpn * adjacency_[k] + c);
-    }
-    for (int c = 0; c < dpn; ++c) {
+    node_columns(node);
+    for (int c = 0; c < dofs.dofs_of_node(node); ++c) {
       storage_->graph->insertLocalIndices(
-          dpn * node + c, Teuchos::ArrayView<const LocalIndex>(columns.data(), columns.size()));
+          dofs.local_dof(node, c),
+          Teuchos::ArrayView<const LocalIndex>(columns.data(), columns.size()));
     }
   }
   Tpetra::endAssembly(*storage_->graph);
   storage_->matrix = Teuchos::rcp(new Tpetra::FECrsMatrix<double>(storage_->graph));
+  column_starts_ = std::move(column_starts);
 }
 
 FeMatrix::~FeMatrix() = default;
@@ -225,22 +255,26 @@ void FeMatrix::begin_assembly() {
 
 void FeMatrix::check_layout() const {
   // add_element() writes entry (node n, component i; neighbour slot k, component j) of the
-  // owned+shared rows at row_offsets[dpn·n + i] + dpn·k + j. That follows from how the graph was
-  // built (sorted neighbours, column index dpn·column node + component); checked once here.
-  const int dpn = dofs_->dofs_per_node();
+  // owned+shared rows at row_offsets[local_dof(n, i)] + neighbour_start(n, k) + j. That follows
+  // from how the graph was built (sorted neighbours, each node's column components consecutive);
+  // checked once here.
   auto local = storage_->matrix->getLocalMatrixHost();
   const auto& entries = local.graph.entries;
   const LocalIndex n_nodes = dofs_->partition().n_local_nodes();
   for (LocalIndex node = 0; node < n_nodes; ++node) {
-    const LocalIndex begin = adjacency_offsets_[node];
-    const LocalIndex degree = adjacency_offsets_[node + 1] - begin;
-    for (int i = 0; i < dpn; ++i) {
-      const std::size_t row = row_offsets_[dpn * node + i];
-      bool matches =
-          row_offsets_[dpn * node + i + 1] - row == static_cast<std::size_t>(dpn * degree);
-      for (LocalIndex k = 0; k < degree && matches; ++k) {
-        for (int j = 0; j < dpn; ++j) {
-          matches = matches && entries(row + dpn * k + j) == dpn * adjacency_[begin + k] + j;
+    const LocalIndex begin = adjacency_offsets_[node], end = adjacency_offsets_[node + 1];
+    std::size_t row_length = 0;
+    for (LocalIndex k = begin; k < end; ++k)
+      row_length += column_starts_[adjacency_[k] + 1] - column_starts_[adjacency_[k]];
+    for (int i = 0; i < dofs_->dofs_of_node(node); ++i) {
+      const LocalIndex row_index = dofs_->local_dof(node, i);
+      const std::size_t row = row_offsets_[row_index];
+      bool matches = row_offsets_[row_index + 1] - row == row_length;
+      for (LocalIndex k = begin; k < end && matches; ++k) {
+        const LocalIndex first = column_starts_[adjacency_[k]];
+        const LocalIndex count = column_starts_[adjacency_[k] + 1] - first;
+        for (LocalIndex j = 0; j < count; ++j) {
+          matches = matches && entries(row + neighbour_start(node, k) + j) == first + j;
         }
       }
       if (!matches) {
@@ -249,6 +283,11 @@ void FeMatrix::check_layout() const {
       }
     }
   }
+}
+
+LocalIndex FeMatrix::neighbour_start(LocalIndex node, LocalIndex k) const {
+  return dofs_->is_uniform() ? dofs_->dofs_per_node() * (k - adjacency_offsets_[node])
+                             : neighbour_starts_[k];
 }
 
 namespace {
@@ -279,14 +318,44 @@ void scatter(int dpn_runtime, int nodes_runtime, const LocalIndex* nodes,
 }  // namespace
 
 void FeMatrix::add_element(LocalIndex element, const double* element_matrix) {
-  const int dpn = dofs_->dofs_per_node();
   const int n_nodes = element_node_counts_[element];
   const std::uint16_t* slots = element_slots_.data() + element_slot_offsets_[element];
   const LocalIndex* nodes = element_nodes_[element];
+  if (!dofs_->is_uniform()) {
+    add_mixed_element(n_nodes, nodes, slots, element_matrix);
+    return;
+  }
+  const int dpn = dofs_->dofs_per_node();
   if (dpn == 3 && n_nodes == 8) {
     scatter<3, 8>(dpn, n_nodes, nodes, slots, element_matrix, values_, row_offsets_);
   } else {
     scatter<0, 0>(dpn, n_nodes, nodes, slots, element_matrix, values_, row_offsets_);
+  }
+}
+
+void FeMatrix::add_mixed_element(int n_nodes, const LocalIndex* nodes, const std::uint16_t* slots,
+                                 const double* element_matrix) {
+  // Element DOFs node-major, each node with its own count.
+  int starts[kMaxMixedElementNodes + 1] = {0};
+  if (n_nodes > kMaxMixedElementNodes) {
+    throw std::logic_error("railfe: FeMatrix: an element of more than " +
+                           std::to_string(kMaxMixedElementNodes) + " nodes on a mixed DOF layout");
+  }
+  for (int a = 0; a < n_nodes; ++a)
+    starts[a + 1] = starts[a] + dofs_->dofs_of_node(nodes[a]);
+  const int n_columns = starts[n_nodes];
+  for (int a = 0; a < n_nodes; ++a) {
+    const std::uint16_t* row_slots = slots + a * n_nodes;
+    const LocalIndex* neighbour_starts = neighbour_starts_.data() + adjacency_offsets_[nodes[a]];
+    for (int i = 0; i < starts[a + 1] - starts[a]; ++i) {
+      double* row = values_ + row_offsets_[dofs_->local_dof(nodes[a], i)];
+      const double* element_row = element_matrix + (starts[a] + i) * n_columns;
+      for (int b = 0; b < n_nodes; ++b) {
+        double* target = row + neighbour_starts[row_slots[b]];
+        for (int j = 0; j < starts[b + 1] - starts[b]; ++j)
+          target[j] += element_row[starts[b] + j];
+      }
+    }
   }
 }
 

@@ -30,7 +30,9 @@ class FeMatrix {
   void begin_assembly();
   /// Adds the dense, row-major matrix of local element \p element (numbered as
   /// MeshPartition::first_local_element() does) to the owned+shared rows. Its size is
-  /// (n·dofs_per_node)² for an element of n nodes, DOFs node-major.
+  /// (Σ dofs_of_node)² over the element's n nodes, DOFs node-major: (n·dofs_per_node)² in a
+  /// uniform layout; in a mixed one a hex8 on solid nodes is 24 × 24, a beam2 12 × 12, a spring2
+  /// from a solid node to a body node 9 × 9 (at most 64 nodes per element there).
   void add_element(LocalIndex element, const double* element_matrix);
   /// Sums shared rows into their owners and completes the matrix (collective).
   void end_assembly();
@@ -48,6 +50,11 @@ class FeMatrix {
  private:
   void build_sparsity();
   void check_layout() const;
+  // Offset of neighbour k (an index into adjacency_) of local node node within node's rows.
+  LocalIndex neighbour_start(LocalIndex node, LocalIndex k) const;
+  void add_mixed_element(int n_nodes, const LocalIndex* nodes, const std::uint16_t* slots,
+                         const double* element_matrix);
+  static constexpr int kMaxMixedElementNodes = 64;
 
   const DofMap* dofs_;
   // CSR over local nodes: their neighbours through elements, in column-node numbering (local
@@ -55,6 +62,10 @@ class FeMatrix {
   std::vector<LocalIndex> adjacency_offsets_;
   std::vector<LocalIndex> adjacency_;
   std::vector<GlobalIndex> column_only_nodes_;
+  // First column index of each column node (local nodes, then column-only nodes), + end.
+  std::vector<LocalIndex> column_starts_;
+  // Mixed layouts: for each adjacency_ entry, where its columns start within the row.
+  std::vector<LocalIndex> neighbour_starts_;
   // For local element e with nodes n_0..n_{m-1}: slot of n_b among n_a's neighbours, for every
   // (a, b), at element_slots_[element_slot_offsets_[e] + a·m + b].
   std::vector<std::size_t> element_slot_offsets_;

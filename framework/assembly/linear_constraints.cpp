@@ -31,7 +31,6 @@ void LinearConstraints::add_multipoint(const MultipointConstraint& constraint) {
 
 void LinearConstraints::finalize() {
   const Communicator& comm = dofs_->partition().comm();
-  const int dpn = dofs_->dofs_per_node();
   // The last value given for a DOF wins (conditions later in the deck override earlier ones).
   std::map<LocalIndex, double> unique(prescribed_.begin(), prescribed_.end());
   prescribed_.assign(unique.begin(), unique.end());
@@ -45,7 +44,7 @@ void LinearConstraints::finalize() {
   const auto duplicate = std::adjacent_find(all_slaves.begin(), all_slaves.end());
   if (duplicate != all_slaves.end()) {
     problem = format_input_message(
-        source_, "", describe_dof(*duplicate, dpn) + " is the slave of two multi-point constraints",
+        source_, "", dofs_->describe(*duplicate) + " is the slave of two multi-point constraints",
         "each DOF constrained once");
   }
   const std::set<long long> slaves(all_slaves.begin(), all_slaves.end());
@@ -53,7 +52,7 @@ void LinearConstraints::finalize() {
     for (const auto& [master, coefficient] : constraint.masters) {
       if (problem.empty() && slaves.count(master)) {
         problem = format_input_message(source_, "",
-                                       describe_dof(master, dpn) +
+                                       dofs_->describe(master) +
                                            " is both a master and a slave of "
                                            "multi-point constraints",
                                        "masters that are not themselves constrained");
@@ -65,7 +64,7 @@ void LinearConstraints::finalize() {
     if (problem.empty() && slaves.count(owned.getGlobalElement(local))) {
       problem =
           format_input_message(source_, "",
-                               describe_dof(owned.getGlobalElement(local), dpn) +
+                               dofs_->describe(owned.getGlobalElement(local)) +
                                    " is both prescribed and the slave of a multi-point constraint",
                                "prescribe the master instead");
     }
@@ -73,6 +72,8 @@ void LinearConstraints::finalize() {
   comm.agree(problem, true);
   n_prescribed_ = comm.sum(static_cast<long long>(prescribed_.size()));
   n_multipoint_ = static_cast<GlobalIndex>(all_slaves.size());
+  if (n_multipoint_ > 0)
+    build_transformation();
 }
 
 Teuchos::RCP<TpetraMatrix> LinearConstraints::apply(const Teuchos::RCP<TpetraMatrix>& K,
@@ -103,14 +104,16 @@ Teuchos::RCP<TpetraMatrix> LinearConstraints::apply(const Teuchos::RCP<TpetraMat
   return system;
 }
 
-Teuchos::RCP<TpetraMatrix> LinearConstraints::eliminate_multipoint(
-    const Teuchos::RCP<TpetraMatrix>& K, TpetraVector& f) {
+void LinearConstraints::build_transformation() {
   const auto owned = dofs_->owned_map();
   std::map<GlobalIndex, const MultipointConstraint*> by_slave;
-  for (const auto& constraint : multipoint_)
+  std::size_t widest_row = 1;  // a rigid link's translation rows have up to three masters
+  for (const auto& constraint : multipoint_) {
     by_slave[constraint.slave] = &constraint;
+    widest_row = std::max(widest_row, constraint.masters.size());
+  }
 
-  transformation_ = Teuchos::rcp(new TpetraMatrix(owned, 1));
+  transformation_ = Teuchos::rcp(new TpetraMatrix(owned, widest_row));
   shift_ = Teuchos::rcp(new TpetraVector(owned));
   auto identity_on_slaves = Teuchos::rcp(new TpetraMatrix(owned, 1));
   const double one = 1.0;
@@ -136,7 +139,20 @@ Teuchos::RCP<TpetraMatrix> LinearConstraints::eliminate_multipoint(
   }
   transformation_->fillComplete(owned, owned);
   identity_on_slaves->fillComplete(owned, owned);
+  identity_on_slaves_ = identity_on_slaves;
+}
 
+Teuchos::RCP<TpetraMatrix> LinearConstraints::transform(const TpetraMatrix& A) const {
+  TpetraMatrix AT(A.getRowMap(), 0);
+  Tpetra::MatrixMatrix::Multiply(A, false, *transformation_, false, AT);
+  auto TtAT = Teuchos::rcp(new TpetraMatrix(transformation_->getDomainMap(), 0));
+  Tpetra::MatrixMatrix::Multiply(*transformation_, true, AT, false, *TtAT);
+  return TtAT;
+}
+
+Teuchos::RCP<TpetraMatrix> LinearConstraints::eliminate_multipoint(
+    const Teuchos::RCP<TpetraMatrix>& K, TpetraVector& f) {
+  const auto owned = dofs_->owned_map();
   // f̄ = Tᵀ (f − K g)
   TpetraVector work(owned);
   K->apply(*shift_, work);
@@ -146,11 +162,7 @@ Teuchos::RCP<TpetraMatrix> LinearConstraints::eliminate_multipoint(
   f.assign(work);
 
   // K̄ = Tᵀ K T + (identity on slave rows, which Tᵀ K T leaves empty)
-  TpetraMatrix KT(K->getRowMap(), 0);
-  Tpetra::MatrixMatrix::Multiply(*K, false, *transformation_, false, KT);
-  TpetraMatrix TtKT(transformation_->getDomainMap(), 0);
-  Tpetra::MatrixMatrix::Multiply(*transformation_, true, KT, false, TtKT);
-  return Tpetra::MatrixMatrix::add(1.0, false, TtKT, 1.0, false, *identity_on_slaves);
+  return Tpetra::MatrixMatrix::add(1.0, false, *transform(*K), 1.0, false, *identity_on_slaves_);
 }
 
 void LinearConstraints::eliminate_prescribed(TpetraMatrix& K, TpetraVector& f) {
@@ -172,6 +184,16 @@ void LinearConstraints::eliminate_prescribed(TpetraMatrix& K, TpetraVector& f) {
 
 void LinearConstraints::remove_prescribed(TpetraMatrix& M) const {
   zero_prescribed_couplings(M, false);
+}
+
+Teuchos::RCP<TpetraMatrix> LinearConstraints::constrained_mass(
+    const Teuchos::RCP<TpetraMatrix>& M) const {
+  Teuchos::RCP<TpetraMatrix> reduced = M;
+  if (n_multipoint_ > 0)
+    reduced = transform(*M);
+  if (n_prescribed_ > 0)
+    zero_prescribed_couplings(*reduced, false);
+  return reduced;
 }
 
 std::vector<double> LinearConstraints::zero_prescribed_couplings(TpetraMatrix& A,

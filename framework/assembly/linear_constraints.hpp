@@ -32,7 +32,7 @@ class LinearConstraints {
   /// Adds a multi-point constraint. Any rank may call it; the owner of the slave keeps it.
   void add_multipoint(const MultipointConstraint& constraint);
   /// Checks consistency (collective): a slave may not be prescribed, be a master, or be the slave
-  /// of two constraints. Throws InputError naming node and component.
+  /// of two constraints. Throws InputError naming node and component. Builds T (collective).
   void finalize();
 
   /// Number of prescribed DOFs over all ranks (after finalize()).
@@ -48,14 +48,23 @@ class LinearConstraints {
   /// Zeroes the rows and columns of the prescribed DOFs in \p M, diagonal included (collective).
   /// For the mass matrix of an eigenproblem whose stiffness went through apply() with zero
   /// values: the prescribed DOFs then carry no inertia and give no eigenvalue. Prescribed DOFs
-  /// only (no multi-point constraints).
+  /// only (no multi-point constraints: use constrained_mass()).
   void remove_prescribed(TpetraMatrix& M) const;
+  /// The mass matrix of the constrained eigenproblem that goes with apply()'s stiffness (after
+  /// finalize(), collective): M̄ = Tᵀ M T with the rows and columns of prescribed DOFs zeroed. The
+  /// rows of slave DOFs are empty (K̄ has 1 there), so slaves and prescribed DOFs carry no inertia
+  /// and give no finite eigenvalue; a mass carried by a rigid link lands on its master with the
+  /// parallel-axis terms. Without multi-point constraints \p M itself is modified and returned.
+  Teuchos::RCP<TpetraMatrix> constrained_mass(const Teuchos::RCP<TpetraMatrix>& M) const;
   /// Turns the solution of the constrained system into u, in place (collective).
   void recover(TpetraVector& solution) const;
   /// Reaction forces r = K u − f at prescribed DOFs (zero elsewhere), from the rows apply() kept.
   void reactions(const TpetraVector& u, TpetraVector& r) const;
 
  private:
+  void build_transformation();
+  // Tᵀ A T (a new matrix).
+  Teuchos::RCP<TpetraMatrix> transform(const TpetraMatrix& A) const;
   Teuchos::RCP<TpetraMatrix> eliminate_multipoint(const Teuchos::RCP<TpetraMatrix>& K,
                                                   TpetraVector& f);
   void eliminate_prescribed(TpetraMatrix& K, TpetraVector& f);
@@ -71,6 +80,7 @@ class LinearConstraints {
   GlobalIndex n_multipoint_ = 0;
   Teuchos::RCP<TpetraMatrix> transformation_;  // T, when there are multi-point constraints
   Teuchos::RCP<TpetraVector> shift_;           // g: offsets at slave DOFs
+  Teuchos::RCP<TpetraMatrix> identity_on_slaves_;
 
   // Original rows of prescribed DOFs: u is imported to the column map of the original K.
   Teuchos::RCP<const TpetraMap> reaction_columns_;

@@ -51,7 +51,7 @@ class CholmodSolver : public RootDirectSolver {
       const auto* permutation = static_cast<const long*>(factor_->Perm);
       const GlobalIndex dof = matrix.global_index(permutation[factor_->minor]);
       return "the matrix is not positive definite (CHOLMOD's pivot failed at " +
-             describe_dof(dof, traits.dofs_per_node) +
+             (traits.name_dof ? traits.name_dof(dof) : describe_dof(dof, traits.dofs_per_node)) +
              "): the model is probably free to move as a rigid body (check the Dirichlet "
              "conditions) or has parts without stiffness";
     }

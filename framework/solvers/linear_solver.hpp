@@ -4,6 +4,7 @@
 /// residual, direct solvers the normwise backward error. A solve that misses its target throws
 /// RunError rather than returning a wrong answer.
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -19,6 +20,9 @@ struct ProblemTraits {
   bool symmetric_positive_definite = true;
   /// Unknowns per mesh node (MueLu aggregates node blocks).
   int dofs_per_node = 1;
+  /// Names global DOF \p dof in messages ("node N component c"); when empty, describe_dof() with
+  /// dofs_per_node does (right for uniform layouts only).
+  std::function<std::string(GlobalIndex)> name_dof;
   /// Coordinates of the owned nodes, one column per axis (optional; helps MueLu).
   Teuchos::RCP<const TpetraMultiVector> node_coordinates;
   /// Near null space over the owned DOFs, e.g. the six rigid-body modes of elasticity (optional;

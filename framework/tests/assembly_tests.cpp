@@ -15,6 +15,7 @@
 #include "framework/mesh/box_generator.hpp"
 #include "framework/solvers/direct_solvers.hpp"
 #include "framework/solvers/gathered_matrix.hpp"
+#include "framework/testing/assembly_testing.hpp"
 
 namespace railfe {
 namespace {
@@ -84,7 +85,7 @@ TEST(FeMatrix, EqualsTheDenseSumOfElementMatrices) {
   const auto A = matrix.matrix();
 
   // Reference: every element of the whole mesh, summed into dense rows keyed by global DOF.
-  std::map<GlobalIndex, std::map<GlobalIndex, double>> reference;
+  testing::DenseRows reference;
   const auto& block = f.mesh.blocks[0];
   for (GlobalIndex e = 0; e < block.n_elements(); ++e) {
     const GlobalIndex* nodes = block.element_nodes(e);
@@ -94,37 +95,11 @@ TEST(FeMatrix, EqualsTheDenseSumOfElementMatrices) {
       }
     }
   }
-  const auto row_map = A->getRowMap();
-  std::size_t rows_checked = 0;
-  for (std::size_t i = 0; i < row_map->getNodeNumElements(); ++i) {
-    const GlobalIndex row = row_map->getGlobalElement(static_cast<LocalIndex>(i));
-    std::size_t n = A->getNumEntriesInGlobalRow(row);
-    Teuchos::Array<GlobalIndex> columns(n);
-    Teuchos::Array<double> values(n);
-    A->getGlobalRowCopy(row, columns(), values(), n);
-    const auto& expected = reference.at(row);
-    EXPECT_EQ(n, expected.size()) << "row " << row;
-    for (std::size_t k = 0; k < n; ++k) {
-      const double want = expected.at(columns[k]);
-      EXPECT_NEAR(values[k], want, 1e-12 * std::abs(want) + 1e-12) << row << "," << columns[k];
-    }
-    ++rows_checked;
-  }
-  EXPECT_EQ(f.comm.sum(static_cast<long long>(rows_checked)), 3 * f.mesh.n_nodes());
+  const long long rows_checked = testing::expect_rows_equal(*A, reference);
+  EXPECT_EQ(f.comm.sum(rows_checked), 3 * f.mesh.n_nodes());
 }
 
-// Applies the constraints to K u = forces (K is modified), solves with CHOLMOD and returns u.
-TpetraVector solve_constrained(const Teuchos::RCP<TpetraMatrix>& K, const TpetraVector& forces,
-                               LinearConstraints& constraints) {
-  TpetraVector loads(forces, Teuchos::Copy);
-  auto system = constraints.apply(K, loads);
-  auto solver = make_cholmod_solver(1e-12);
-  solver->setup(system, ProblemTraits{});
-  TpetraVector u(forces.getMap());
-  solver->solve(loads, u);
-  constraints.recover(u);
-  return u;
-}
+using testing::solve_constrained;
 
 // u*: a smooth field over global DOFs, used as the exact solution.
 double exact(GlobalIndex dof) {

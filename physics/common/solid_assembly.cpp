@@ -119,7 +119,8 @@ double side_set_area(const SideSet& set, const MeshPartition& partition) {
 // Adds m ω² r⊥ at every local node of the load's set, m the node's lumped mass from each hex8
 // element around it (the overlap sum is completed by the caller).
 void add_centrifugal_load(const CentrifugalLoad& load, const MaterialTable& materials,
-                          const MeshPartition& partition, Teuchos::ArrayRCP<double>& f) {
+                          const DofMap& dofs, Teuchos::ArrayRCP<double>& f) {
+  const MeshPartition& partition = dofs.partition();
   const Mesh& mesh = partition.mesh();
   std::vector<char> spinning(partition.n_local_nodes(), 0);
   for (GlobalIndex node : mesh.node_set(load.node_set, "", "").nodes) {
@@ -152,7 +153,7 @@ void add_centrifugal_load(const CentrifugalLoad& load, const MaterialTable& mate
         }
         const double m = mass[(3 * a) * 25];
         for (int d = 0; d < 3; ++d)
-          f[3 * nodes[a] + d] += m * w2 * (r[d] - along * axis[d]);
+          f[dofs.local_dof(nodes[a], d)] += m * w2 * (r[d] - along * axis[d]);
       }
     }
   }
@@ -183,12 +184,12 @@ void assemble_solid_loads(const SolidConditions& conditions, const MaterialTable
         const LocalIndex* nodes = block.connectivity.data() + block.offsets[e];
         for (int a = 0; a < 8; ++a) {
           for (int d = 0; d < 3; ++d)
-            f[3 * nodes[a] + d] += element_forces[3 * a + d];
+            f[dofs.local_dof(nodes[a], d)] += element_forces[3 * a + d];
         }
       }
     }
     for (const auto& load : conditions.centrifugal_loads)
-      add_centrifugal_load(load, materials, partition, f);
+      add_centrifugal_load(load, materials, dofs, f);
     for (const auto& load : conditions.surface_loads) {
       const SideSet& set = mesh.side_set(load.side_set, "", "");
       std::array<double, 3> traction{};
@@ -215,7 +216,7 @@ void assemble_solid_loads(const SolidConditions& conditions, const MaterialTable
         for (int k = 0; k < 4; ++k) {
           const LocalIndex node = nodes[kHex8FaceNodes[side.face][k]];
           for (int d = 0; d < 3; ++d)
-            f[3 * node + d] += face_forces[3 * k + d];
+            f[dofs.local_dof(node, d)] += face_forces[3 * k + d];
         }
       }
     }
@@ -233,7 +234,7 @@ void assemble_solid_loads(const SolidConditions& conditions, const MaterialTable
       if (local < 0 || local >= partition.n_owned_nodes())
         continue;
       for (int d = 0; d < 3; ++d)
-        f[3 * local + d] += force.total_force[d] / active;
+        f[dofs.local_dof(local, d)] += force.total_force[d] / active;
     }
   }
 }
@@ -293,7 +294,7 @@ void prescribe_displacements(const SolidConditions& conditions, const DofMap& do
       const double* c = partition.coordinates(local);
       const double value = expression ? (*expression)(c[0], c[1], c[2]) : condition.value;
       for (int component : condition.components)
-        constraints.prescribe(owned.getGlobalElement(dofs.local_dof(local, component)), value);
+        constraints.prescribe(dofs.global_dof(node, component), value);
     }
   }
 }
@@ -309,7 +310,8 @@ void add_solid_constraints(
       if (partition.node_ranks()[slave] < 0 || partition.node_ranks()[master] < 0)
         continue;
       for (int d = 0; d < 3; ++d) {
-        constraints.add_multipoint({3 * slave + d, {{3 * master + d, 1.0}}, 0.0});
+        constraints.add_multipoint(
+            {dofs.global_dof(slave, d), {{dofs.global_dof(master, d), 1.0}}, 0.0});
       }
     }
   }
@@ -345,7 +347,8 @@ ProblemTraits elasticity_traits(const DofMap& dofs) {
   const MeshPartition& partition = dofs.partition();
   ProblemTraits traits;
   traits.symmetric_positive_definite = true;
-  traits.dofs_per_node = dofs.dofs_per_node();
+  traits.dofs_per_node = dofs.solver_dofs_per_node();
+  traits.name_dof = [&dofs](GlobalIndex dof) { return dofs.describe(dof); };
   const LocalIndex n_owned = partition.n_owned_nodes();
   const auto comm = partition.comm().teuchos();
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
@@ -374,19 +377,20 @@ ProblemTraits elasticity_traits(const DofMap& dofs) {
   for (LocalIndex n = 0; n < n_owned; ++n) {
     const double* c = partition.coordinates(n);
     const double x = c[0] - centre[0], y = c[1] - centre[1], z = c[2] - centre[2];
-    const auto dof = [&](int component) { return dofs.local_dof(n, component); };
+    const LocalIndex first = dofs.local_dof(n, 0);
     for (int d = 0; d < 3; ++d)
-      mode[d][dof(d)] = 1.0;  // translations
-    // rotations about x, y, z: ω × r
-    mode[3][dof(1)] = -z;
-    mode[3][dof(2)] = y;
-    mode[4][dof(0)] = z;
-    mode[4][dof(2)] = -x;
-    mode[5][dof(0)] = -y;
-    mode[5][dof(1)] = x;
-    if (dofs.dofs_per_node() == 6)  // beam and body nodes turn with the body
+      mode[d][first + d] = 1.0;  // translations
+    // rotations about x, y, z: ω × r, and the rotation itself where the node has rotations
+    mode[3][first + 1] = -z;
+    mode[3][first + 2] = y;
+    mode[4][first + 0] = z;
+    mode[4][first + 2] = -x;
+    mode[5][first + 0] = -y;
+    mode[5][first + 1] = x;
+    if (dofs.dofs_of_node(n) == 6) {
       for (int d = 0; d < 3; ++d)
-        mode[3 + d][dof(3 + d)] = 1.0;
+        mode[3 + d][first + 3 + d] = 1.0;
+    }
   }
   traits.node_coordinates = coordinates;
   traits.near_null_space = modes;

@@ -55,13 +55,15 @@ void add_solid_constraints(
     LinearConstraints& constraints);
 
 /// Centre stresses (6 per element: xx, yy, zz, xy, yz, zx) of the local hex8 elements in
-/// partition order, from displacements \p u_overlap over the overlapping DOFs (exact for both
-/// formulations: the enhanced strains vanish at the centre); other element types get zeros.
+/// partition order, from displacements \p u_overlap over the overlapping DOFs of a uniform 3-DOF
+/// map (exact for both formulations: the enhanced strains vanish at the centre); other element
+/// types get zeros.
 std::vector<double> element_stresses(const MeshPartition& partition, const MaterialTable& materials,
                                      const double* u_overlap);
 
 /// What MueLu needs to coarsen elasticity well: node coordinates and the six rigid-body modes
-/// (with the rotation components of 6-DOF nodes).
+/// (rotations included at 6-DOF nodes; a mixed layout gives MueLu scalar DOFs, see
+/// DofMap::solver_dofs_per_node()). \p dofs must outlive the traits (they name DOFs with it).
 ProblemTraits elasticity_traits(const DofMap& dofs);
 
 }  // namespace railfe

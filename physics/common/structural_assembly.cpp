@@ -55,8 +55,9 @@ bool element_matrix(Matrix kind, const StructuralSection& section, const MeshPar
 }
 
 void require_six(const DofMap& dofs) {
-  // TODO(h-dofs): with the mixed 3/6 DOF map, check the element's nodes carry six DOFs instead.
-  if (dofs.dofs_per_node() != 6)
+  // Mixed solid and beam models (DofMap::for_mesh) are refused by the modules before assembly;
+  // when they are wired, this becomes a check that each element's nodes carry six DOFs.
+  if (!dofs.is_uniform() || dofs.dofs_per_node() != 6)
     throw std::logic_error("structural elements need 6 DOFs per node");
 }
 

@@ -49,6 +49,7 @@ ExplicitSolver::ExplicitSolver(const ExplicitSettings& settings, const DofMap& d
                                const MaterialTable& materials, const std::string& deck,
                                const std::string& path)
     : settings_(settings), dofs_(dofs), comm_(dofs.partition().comm()), deck_(deck) {
+  dofs.require_uniform(3, "the explicit solver (its kernels index 3 x node)");
   const MeshPartition& partition = dofs.partition();
   n_owned_ = partition.n_owned_nodes();
   n_owned_dofs_ = 3 * static_cast<std::size_t>(n_owned_);

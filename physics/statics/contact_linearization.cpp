@@ -42,13 +42,14 @@ ContactLinearization linearize_contact(const ContactPairs& contact, const DofMap
           reference_gap += weight[a] * n[d] * mesh.coordinates[3 * nodes[a] + d];
       for (int a = 0; a < 5; ++a) {
         for (int d = 0; d < 3; ++d) {
-          const GlobalIndex row = 3 * nodes[a] + d;
+          const GlobalIndex row = dofs.global_dof(nodes[a], d);
           if (!map->isNodeGlobalElement(row))
             continue;
           result.force->sumIntoGlobalValue(row, -k * reference_gap * weight[a] * n[d]);
           for (int b = 0; b < 5; ++b)
             for (int e = 0; e < 3; ++e)
-              entries.emplace_back(row, 3 * nodes[b] + e, k * weight[a] * n[d] * weight[b] * n[e]);
+              entries.emplace_back(row, dofs.global_dof(nodes[b], e),
+                                   k * weight[a] * n[d] * weight[b] * n[e]);
         }
       }
     }

@@ -64,7 +64,7 @@ std::vector<double> ground_spring_diagonal(const std::vector<GroundSpring>& spri
     double share = 0;
     for (LocalIndex node : owned_nodes(partition, spring.node_set, share)) {
       for (int d = 0; d < 3; ++d)
-        diagonal[3 * node + d] += share * spring.stiffness[d];
+        diagonal[dofs.local_dof(node, d)] += share * spring.stiffness[d];
     }
   }
   return diagonal;
@@ -80,7 +80,7 @@ std::vector<std::array<double, 3>> ground_spring_forces(const std::vector<Ground
     std::array<double, 3> force{0, 0, 0};
     for (LocalIndex node : owned_nodes(partition, spring.node_set, share)) {
       for (int d = 0; d < 3; ++d)
-        force[d] -= share * spring.stiffness[d] * values[3 * node + d];
+        force[d] -= share * spring.stiffness[d] * values[dofs.local_dof(node, d)];
     }
     for (double& f : force)
       f = partition.comm().sum(f);
