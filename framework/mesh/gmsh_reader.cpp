@@ -155,6 +155,10 @@ struct GmshContent {
   std::map<std::string, std::vector<std::array<GlobalIndex, 4>>> section_quads;
   std::map<std::string, std::set<GlobalIndex>> set_nodes;  // per physical group
   std::map<std::string, int> set_ids;
+  // 2-node lines per physical curve: the beam2 blocks of a mesh without hexahedra; a curve in
+  // two physical curves would give its elements twice.
+  std::map<std::string, std::vector<std::array<GlobalIndex, 2>>> lines;
+  std::string shared_curve;
 };
 
 std::string physical_name(const GmshContent& content, int dim, int tag) {
@@ -308,6 +312,8 @@ void read_elements(TokenReader& in, GmshContent& content) {
       in.fail("triangles in a physical surface cannot form a side set of hexahedra");
     }
     const std::string block_name = dim == 3 ? block_of_entity(in, content, dim, entity) : "";
+    if (dim == 1 && type == 1 && physicals.size() > 1)
+      content.shared_curve = "curve " + std::to_string(entity);
     for (long long e = 0; e < count; ++e) {
       in.integer();  // element tag
       std::array<GlobalIndex, 8> nodes{};
@@ -323,6 +329,8 @@ void read_elements(TokenReader& in, GmshContent& content) {
         content.set_nodes[name].insert(nodes.begin(), nodes.begin() + n_nodes);
         if (dim == 2)
           content.quads[name].push_back({nodes[0], nodes[1], nodes[2], nodes[3]});
+        if (dim == 1 && type == 1)
+          content.lines[name].push_back({nodes[0], nodes[1]});
       }
     }
   }
@@ -438,6 +446,19 @@ Mesh read_gmsh_mesh(const std::string& path) {
     for (const auto& hex : hexes)
       block.add_element(hex.data(), 8);
     mesh.blocks.push_back(std::move(block));
+  }
+  // Without hexahedra, a line model: physical curves are beam2 blocks (their nodes also a node
+  // set, as always).
+  if (content.hexes.empty()) {
+    if (!content.lines.empty() && !content.shared_curve.empty())
+      throw_input_error(path, "", content.shared_curve + " lies in two physical curves",
+                        "each curve in one physical curve, whose lines become a beam2 block");
+    for (const auto& [name, lines] : content.lines) {
+      ElementBlock block{name, content.set_ids.at(name), ElementType::beam2, 0, {0}, {}};
+      for (const auto& line : lines)
+        block.add_element(line.data(), 2);
+      mesh.blocks.push_back(std::move(block));
+    }
   }
   mesh.number_blocks();
   for (const auto& [name, nodes] : content.set_nodes) {

@@ -9,14 +9,17 @@
 
 namespace railfe {
 
-/// Reads an Exodus II mesh (HEX8 blocks; BAR2/BEAM2 and SPHERE blocks are read as beam2 and
-/// point_mass). Unnamed blocks and sets are called block_<id>, nodelist_<id>, surface_<id>.
-/// Throws InputError for a missing or unreadable file or an element type railfe cannot use.
+/// Reads an Exodus II mesh (HEX8 blocks; BAR2/BEAM2, SPRING2 and SPHERE blocks are read as
+/// beam2, spring2 and point_mass). Unnamed blocks and sets are called block_<id>, nodelist_<id>,
+/// surface_<id>. Throws InputError for a missing or unreadable file or an element type railfe
+/// cannot use.
 Mesh read_exodus_mesh(const std::string& path);
 
 /// Reads a Gmsh .msh 4.1 ASCII mesh. Hexahedra form element blocks, one per physical volume
 /// (or per volume entity when none is defined); quadrangles of a physical surface become both a
-/// side set and a node set of that name; physical curves and points become node sets.
+/// side set and a node set of that name; physical curves and points become node sets. A mesh
+/// without hexahedra is a line model: each physical curve's 2-node lines (Gmsh type 1) also form
+/// a beam2 block of its name (a curve in two physical curves is refused).
 /// Throws InputError naming the file and line for anything it cannot use.
 Mesh read_gmsh_mesh(const std::string& path);
 

@@ -208,6 +208,44 @@ Physical Surface("top") = {body[0]};
   EXPECT_NO_THROW(check_mesh(mesh));
 }
 
+TEST(GmshReader, ReadsALineModelAsBeams) {
+  const auto dir = scratch("gmsh_lines");
+  std::ofstream(dir / "frame.geo") << R"(
+Point(1) = {0, 0, 0}; Point(2) = {0, 0, 3}; Point(3) = {4, 0, 3}; Point(4) = {4, 0, 0};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4};
+Transfinite Curve{1, 2, 3} = 11;
+Physical Curve("columns") = {1, 3};
+Physical Curve("girder") = {2};
+Physical Point("feet") = {1, 4};
+)";
+  const std::string command = "gmsh -1 -format msh41 -o " + (dir / "frame.msh").string() + " " +
+                              (dir / "frame.geo").string() + " > " + (dir / "gmsh.log").string() +
+                              " 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0) << "gmsh failed; see " << dir / "gmsh.log";
+  const Mesh mesh = read_gmsh_mesh((dir / "frame.msh").string());
+  EXPECT_EQ(mesh.n_nodes(), 31);  // the corners shared by column and girder
+  ASSERT_EQ(mesh.blocks.size(), 2u);
+  for (const ElementBlock& block : mesh.blocks) {
+    EXPECT_EQ(block.type, ElementType::beam2);
+    EXPECT_EQ(block.n_elements(), block.name == "columns" ? 20 : 10) << block.name;
+  }
+  EXPECT_EQ(mesh.node_set("feet", "", "").nodes.size(), 2u);  // points stay node sets
+  EXPECT_EQ(mesh.node_set("girder", "", "").nodes.size(), 11u);
+  EXPECT_NO_THROW(check_mesh(mesh));
+  // A curve in two physical curves would give its elements twice.
+  std::ofstream(dir / "twice.geo") << R"(
+Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Line(1) = {1, 2};
+Physical Curve("a") = {1};
+Physical Curve("b") = {1};
+)";
+  ASSERT_EQ(std::system(("gmsh -1 -format msh41 -o " + (dir / "twice.msh").string() + " " +
+                         (dir / "twice.geo").string() + " > /dev/null 2>&1")
+                            .c_str()),
+            0);
+  const std::string message = input_error_of([&] { read_gmsh_mesh((dir / "twice.msh").string()); });
+  EXPECT_NE(message.find("curve 1 lies in two physical curves"), std::string::npos) << message;
+}
+
 TEST(GmshReader, RefusesWhatItCannotUse) {
   const auto dir = scratch("gmsh_bad");
   std::ofstream(dir / "old.msh") << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n";

@@ -48,7 +48,7 @@ bool element_matrix(Matrix kind, const StructuralSection& section, const MeshPar
     case StructuralKind::point_mass:
       if (kind != Matrix::mass)
         return false;
-      put6(point_mass_matrix(section.point.mass, section.point.inertia));
+      put6(point_mass_matrix(section.point.mass, section.point.inertia, section.point.offset));
       return true;
   }
   return false;

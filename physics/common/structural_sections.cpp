@@ -93,14 +93,19 @@ ParameterSpec section_parameters() {
                "", 6);
   // Point masses.
   s.real("Mass", 0, "Point mass: the mass at each node.", "kg", Range::non_negative());
-  s.real_array("Inertia", {},
-               "Point mass: rotary inertia about the node in global axes, {Ixx, Iyy, Izz} or "
-               "{Ixx, Iyy, Izz, Ixy, Iyz, Izx} (left out: none).",
-               "kg m^2", 0);
+  s.real_array(
+      "Inertia", {},
+      "Point mass: rotary inertia about its centre of mass in global axes, {Ixx, Iyy, Izz} or "
+      "{Ixx, Iyy, Izz, Ixy, Iyz, Izx} (left out: none).",
+      "kg m^2", 0);
   s.only_when("Element", {"beam"},
               {"Material", "Shape", "Orientation", "Mass matrix", "Rotary inertia"});
   s.only_when("Element", {"spring-damper"}, {"Stiffness", "Damping", "Axes"});
-  s.only_when("Element", {"point mass"}, {"Mass", "Inertia"});
+  s.real_array("Offset", {0, 0, 0},
+               "Point mass: its centre of mass from the node (global axes); the node carries it "
+               "rigidly (small rotations), Inertia being about the centre of mass.",
+               "m", 3);
+  s.only_when("Element", {"point mass"}, {"Mass", "Inertia", "Offset"});
   s.only_when("Shape", {"rectangle"}, {"Width", "Height"});
   s.only_when("Shape", {"circle", "tube"}, {"Diameter"});
   s.only_when("Shape", {"tube"}, {"Wall thickness"});
@@ -239,8 +244,9 @@ PointMassProperties read_point_mass(const Teuchos::ParameterList& list, const st
     throw_input_error(deck, path + "/Mass", "missing: the point mass has neither mass nor inertia",
                       "a positive Mass, an Inertia, or both");
   }
+  point.offset = vector3(list.get<Teuchos::Array<double>>("Offset"));
   try {
-    point_mass_matrix(point.mass, point.inertia);
+    point_mass_matrix(point.mass, point.inertia, point.offset);
   } catch (const std::invalid_argument& error) {
     throw_input_error(deck, path + "/Inertia", error.what(),
                       "a symmetric positive semi-definite inertia tensor");
@@ -385,7 +391,10 @@ std::vector<char> massless_components(const Mesh& mesh, const SectionTable& sect
     } else if (section.kind == StructuralKind::point_mass) {
       for (int c = 0; c < 3; ++c) {
         mass[c] = section.point.mass > 0;
-        mass[3 + c] = section.point.inertia(c, c) > 0;
+        mass[3 + c] =
+            section.point.inertia(c, c) > 0 ||
+            (section.point.mass > 0 && section.point.offset.squaredNorm() >
+                                           section.point.offset(c) * section.point.offset(c));
       }
     }
     for (GlobalIndex node : block.connectivity)

@@ -38,10 +38,11 @@ struct BeamProperties {
   bool rotary_inertia = true;            ///< ρ I in the bending mass
 };
 
-/// A point mass on a 6-DOF node (global axes, about the node).
+/// A point mass on a 6-DOF node (global axes), its centre of mass at an offset from the node.
 struct PointMassProperties {
   double mass = 0;                                    ///< kg
-  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();  ///< kg m²
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();  ///< kg m², about the centre of mass
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();   ///< centre of mass from the node (m)
 };
 
 /// One entry of Sections.

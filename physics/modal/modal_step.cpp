@@ -244,8 +244,11 @@ void ModalStep::check_structural(const CheckContext& context) {
   const std::string step = "the modal step '" + context.step_name + "'";
   sections_.reset();
   dofs_per_node_ = 3;
-  if (!has_structural_blocks(mesh))
+  if (!has_structural_blocks(mesh)) {
+    if (context.model.has_section("Sections"))  // checked, though nothing uses it
+      structural_sections(context.model, step);
     return;
+  }
   // TODO(h-dofs): mixed 3/6 DOFs per node with solid-beam ties lift this refusal.
   if (has_solid_blocks(mesh))
     throw_input_error(deck, "Mesh",

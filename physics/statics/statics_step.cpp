@@ -61,6 +61,8 @@ void StaticsStep::check(const CheckContext& context) {
     check_structural_conditions(conditions_, deck, context.path);
   } else {
     refuse_rotations(conditions_, deck, context.path, "a model of solids");
+    if (context.model.has_section("Sections"))  // checked, though nothing uses it
+      structural_sections(context.model, step);
   }
   for (const auto& force : conditions_.nodal_forces) {
     bool attached = false;

@@ -1,6 +1,7 @@
 // Structural assembly at 1 and 2 ranks: the stiffness, mass and damping of beams, spring2
 // elements, springs to the ground and point masses equal the dense sum of the element matrices
-// over the whole mesh; gravity loads sum to the model's weight.
+// over the whole mesh; gravity loads sum to the model's weight, a point mass off its node adding
+// the moment of its weight.
 #include <gtest/gtest.h>
 
 #include <Tpetra_CrsMatrix.hpp>
@@ -69,7 +70,8 @@ const char* const kDeck = R"x(<ParameterList name="railfe">
       <Parameter name="Blocks" type="Array(string)" value="{mass}"/>
       <Parameter name="Element" type="string" value="point mass"/>
       <Parameter name="Mass" type="double" value="50"/>
-      <Parameter name="Inertia" type="Array(double)" value="{3, 4, 5, 0.5, 0.2, 0.1}"/></ParameterList>
+      <Parameter name="Inertia" type="Array(double)" value="{3, 4, 5, 0.5, 0.2, 0.1}"/>
+      <Parameter name="Offset" type="Array(double)" value="{0.1, 0, 0.5}"/></ParameterList>
     <ParameterList name="support">
       <Parameter name="Blocks" type="Array(string)" value="{ground}"/>
       <Parameter name="Element" type="string" value="spring-damper"/>
@@ -114,7 +116,8 @@ struct Fixture {
               kind == 0 ? section.spring.stiffness : section.spring.damping, section.spring.axes);
           matrix = n == 6 ? Eigen::MatrixXd(one) : Eigen::MatrixXd(two_node_matrix(one));
         } else if (section.kind == StructuralKind::point_mass && kind == 1) {
-          matrix = point_mass_matrix(section.point.mass, section.point.inertia);
+          matrix =
+              point_mass_matrix(section.point.mass, section.point.inertia, section.point.offset);
         }
         for (int r = 0; r < n; ++r)
           for (int c = 0; c < n; ++c)
@@ -174,15 +177,20 @@ TEST(StructuralAssembly, GravityLoadsSumToTheWeight) {
   conditions.gravity = {0, 0, -9.81};
   TpetraVector forces(f.dofs->owned_map());
   assemble_structural_loads(conditions, *f.sections, *f.dofs, forces);
-  double fz = 0;
+  double fz = 0, my = 0;
   const auto data = forces.getData();
-  for (LocalIndex node = 0; node < f.partition->n_owned_nodes(); ++node)
+  for (LocalIndex node = 0; node < f.partition->n_owned_nodes(); ++node) {
     fz += data[f.dofs->local_dof(node, 2)];
+    my += data[f.dofs->local_dof(node, 4)];
+  }
   // The tube's mass rho A L over the two segments, and the point mass.
   const BeamProperties& beam = f.sections->of_block(0).beam;
   const double length = 3 + std::sqrt(5.0);
   const double weight = (7800 * beam.section.area * length + 50) * 9.81;
   EXPECT_NEAR(f.comm.sum(fz), -weight, 1e-12 * weight);
+  // The beams' end moments cancel element by element; the point mass's weight acts at its
+  // centre, 0.1 m along x from its node: r × m g = (0, 0.1 × 50 × 9.81, 0).
+  EXPECT_NEAR(f.comm.sum(my), 0.1 * 50 * 9.81, 1e-12 * weight);
 }
 
 }  // namespace
