@@ -69,12 +69,14 @@ ImplicitRecorder::ImplicitRecorder(const ImplicitSettings& settings, const DofMa
       root_);
   measurements_path_ = output.staging_path(step_name + "_measurements.csv");
   if (exodus) {
-    exodus_ = std::make_unique<ExodusWriter>(
-        output.staging_path(step_name + ".exo"), mesh, title,
-        std::vector<std::string>{"displacement_x", "displacement_y", "displacement_z", "velocity_x",
-                                 "velocity_y", "velocity_z", "acceleration_x", "acceleration_y",
-                                 "acceleration_z"},
-        std::vector<std::string>{}, root_);
+    std::vector<std::string> names{"displacement_x", "displacement_y", "displacement_z",
+                                   "velocity_x",     "velocity_y",     "velocity_z",
+                                   "acceleration_x", "acceleration_y", "acceleration_z"};
+    if (dofs.is_uniform() && dofs.dofs_per_node() == 6)  // beams: their sections' rotations too
+      names.insert(names.end(), {"rotation_x", "rotation_y", "rotation_z"});
+    exodus_ = std::make_unique<ExodusWriter>(output.staging_path(step_name + ".exo"), mesh, title,
+                                             names, std::vector<std::string>{}, root_);
+    exodus_width_ = static_cast<int>(names.size());
   }
 }
 
@@ -136,13 +138,17 @@ void ImplicitRecorder::snapshot(const ImplicitState& state, bool last) {
     return;
   const MeshPartition& partition = dofs_.partition();
   const LocalIndex n_owned = partition.n_owned_nodes();
-  std::vector<double> owned(9 * static_cast<std::size_t>(n_owned), 0.0);
+  const int width = exodus_width_;
+  std::vector<double> owned(static_cast<std::size_t>(width) * n_owned, 0.0);
   const double* fields[3] = {state.u, state.v, state.a};
-  for (LocalIndex node = 0; node < n_owned; ++node)
+  for (LocalIndex node = 0; node < n_owned; ++node) {
     for (int f = 0; f < 3; ++f)
       for (int d = 0; d < 3; ++d)
-        owned[9 * node + 3 * f + d] = fields[f][dofs_.local_dof(node, d)];
-  exodus_->write_step(state.time, gather_node_field(partition, owned, 9), {});
+        owned[width * node + 3 * f + d] = fields[f][dofs_.local_dof(node, d)];
+    for (int d = 0; 9 + d < width; ++d)
+      owned[width * node + 9 + d] = state.u[dofs_.local_dof(node, 3 + d)];
+  }
+  exodus_->write_step(state.time, gather_node_field(partition, owned, width), {});
   while (settings_.exodus_interval > 0 && next_snapshot_ <= state.time + 1e-12)
     next_snapshot_ += settings_.exodus_interval;
 }

@@ -72,6 +72,7 @@ class ImplicitRecorder {
   std::unique_ptr<ExodusWriter> exodus_;
   std::string measurements_path_;
   double next_snapshot_ = 0;
+  int exodus_width_ = 9;  // nodal fields per node in the Exodus file
 };
 
 }  // namespace railfe
