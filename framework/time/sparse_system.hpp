@@ -60,7 +60,7 @@ class SparseLinearSystem : public SecondOrderSystem, public TriangularSolves {
   void check_solutions(bool check) { check_ = check; }
 
   /// Whether A is factored as a supernodal L Lᵀ (CHOLMOD may choose so; normally true).
-  bool has_triangular_factor() const override { return !parent_.empty() || n_unknowns() == 0; }
+  bool has_triangular_factor() const override { return !parent_.empty(); }
   /// W = L⁻¹ P B over the supernodes on the paths from B's rows to the root.
   void forward_solve_sparse(const SparseColumns& b, ForwardSolution& w) override;
   /// y = L⁻¹ P b.
