@@ -135,7 +135,7 @@ TEST(MovingContacts, SeparationOverABumpIsReported) {
 }
 
 // The same landing at α = −0.05, where the displacement rows alone reflect the landing
-// velocity into a step-to-step mode that decays by at most ρ∞ = 0.905 a step (91 releases and
+// velocity into a step-to-step mode that decays by at most ρ∞ = 0.905 a step (45–91 releases and
 // engagements before the plastic-impact restart).
 TEST(MovingContacts, LandingAtSmallAlphaDoesNotChatter) {
   CrossingSettings s;
