@@ -7,6 +7,7 @@
 
 #include "framework/base/error.hpp"
 #include "framework/time/sparse_system.hpp"
+#include "framework/time/triangular_solves.hpp"
 
 namespace railfe {
 
@@ -39,30 +40,49 @@ void BlockSaddlePointSolver::factor(const double* u, const double* v,
   const Eigen::Index nc = static_cast<Eigen::Index>(rows.size());
   const bool rows_moved = !rows.same_matrix(rows_) || rows.size() != rows_.size();
   const bool structure_changed = system_.structure_factorizations() != structure_version_;
+  TriangularSolves* halves = dynamic_cast<TriangularSolves*>(&system_.structure());
+  if (halves && !halves->has_triangular_factor())
+    halves = nullptr;
+  const bool method_changed = halves != halves_;
+  halves_ = halves;
   rows_ = rows;
   bool vehicle_rows_moved = false;
-  if (rows_moved) {  // C_sᵀ and C_vᵀ as dense columns
-    structure_columns_.setZero(ns, nc);
+  if (rows_moved) {  // C_sᵀ as sparse columns, C_vᵀ dense
+    structure_sparse_ = SparseColumns();
     Eigen::MatrixXd vehicle_columns = Eigen::MatrixXd::Zero(nv, nc);
-    for (Eigen::Index i = 0; i < nc; ++i)
+    for (Eigen::Index i = 0; i < nc; ++i) {
       for (std::size_t k = rows.offsets[i]; k < rows.offsets[i + 1]; ++k) {
         const Eigen::Index column = static_cast<Eigen::Index>(rows.columns[k]);
-        if (column < ns)
-          structure_columns_(column, i) += rows.values[k];
-        else
+        if (column < ns) {
+          structure_sparse_.rows.push_back(rows.columns[k]);
+          structure_sparse_.values.push_back(rows.values[k]);
+        } else {
           vehicle_columns(column - ns, i) += rows.values[k];
+        }
       }
+      structure_sparse_.offsets.push_back(structure_sparse_.rows.size());
+    }
     vehicle_rows_moved =
         vehicle_columns.cols() != vehicle_columns_.cols() || vehicle_columns != vehicle_columns_;
     if (vehicle_rows_moved)
       vehicle_columns_ = std::move(vehicle_columns);
   }
-  if (rows_moved || structure_changed) {  // Z = A_s⁻¹ C_sᵀ, C_s Z
-    z_.resize(ns, nc);
-    if (nc > 0)
-      system_.structure().solve_columns(structure_columns_.data(), static_cast<std::size_t>(nc),
-                                        z_.data());
-    structure_schur_ = structure_columns_.transpose() * z_;
+  if (rows_moved || structure_changed || method_changed) {  // C_s A_s⁻¹ C_sᵀ
+    if (halves_) {  // W = L⁻¹ P C_sᵀ by sparse forward solves, C_s A_s⁻¹ C_sᵀ = Wᵀ W
+      halves_->forward_solve_sparse(structure_sparse_, forward_);
+      structure_schur_.noalias() = forward_.values.transpose() * forward_.values;
+    } else {  // Z = A_s⁻¹ C_sᵀ by full solves, C_s Z
+      Eigen::MatrixXd columns = Eigen::MatrixXd::Zero(ns, nc);
+      for (Eigen::Index i = 0; i < nc; ++i)
+        for (std::size_t k = structure_sparse_.offsets[i]; k < structure_sparse_.offsets[i + 1];
+             ++k)
+          columns(static_cast<Eigen::Index>(structure_sparse_.rows[k]), i) +=
+              structure_sparse_.values[k];
+      z_.resize(ns, nc);
+      if (nc > 0)
+        system_.structure().solve_columns(columns.data(), static_cast<std::size_t>(nc), z_.data());
+      structure_schur_ = columns.transpose() * z_;
+    }
     ++statistics_.constraint_blocks;
     structure_version_ = system_.structure_factorizations();
   }
@@ -74,13 +94,13 @@ void BlockSaddlePointSolver::factor(const double* u, const double* v,
     vehicle_regular_ = nv == 0 || vehicle_lu_.rcond() > 1e-12;
     vehicle_norm_ = nv == 0 ? 0.0 : vehicle_matrix_.cwiseAbs().rowwise().sum().maxCoeff();
   }
-  if (vehicle_regular_) {  // S = C_s Z + C_v A_v⁻¹ C_vᵀ (n_c × n_c)
+  if (vehicle_regular_) {  // S = C_s A_s⁻¹ C_sᵀ + C_v A_v⁻¹ C_vᵀ (n_c × n_c)
     if (vehicle_rows_moved || vehicle_changed) {
       w_ = nv > 0 ? Eigen::MatrixXd(vehicle_lu_.solve(vehicle_columns_)) : Eigen::MatrixXd(0, nc);
       vehicle_schur_ = vehicle_columns_.transpose() * w_;
     }
     reduced_ = structure_schur_ + vehicle_schur_;
-  } else {  // A_v singular alone (a massless vehicle point): [A_v C_vᵀ; C_v −C_s Z]
+  } else {  // A_v singular alone (a massless vehicle point): [A_v C_vᵀ; C_v −C_s A_s⁻¹ C_sᵀ]
     reduced_.setZero(nv + nc, nv + nc);
     reduced_.topLeftCorner(nv, nv) = vehicle_matrix_;
     reduced_.topRightCorner(nv, nc) = vehicle_columns_;
@@ -102,9 +122,20 @@ void BlockSaddlePointSolver::solve(const double* r, const double* r_c, double* x
   Eigen::Map<Eigen::VectorXd> xs(x, n);
   Eigen::Map<Eigen::VectorXd> multipliers(mu, nc);
   const Eigen::Map<const Eigen::VectorXd> rs(r, n), rc(r_c, nc);
+  // C_s A_s⁻¹ r_s: through y = L⁻¹ P r_s and W, or through y = A_s⁻¹ r_s and C_s
   y_.resize(ns);
-  system_.structure().solve(r, y_.data());
-  const Eigen::VectorXd structure_part = structure_columns_.transpose() * y_;
+  Eigen::VectorXd structure_part = Eigen::VectorXd::Zero(nc);
+  if (halves_) {
+    halves_->forward_solve(r, y_.data());
+    for (std::size_t p = 0; p < forward_.pattern.size(); ++p)
+      structure_part += forward_.values.row(static_cast<Eigen::Index>(p)).transpose() *
+                        y_[static_cast<Eigen::Index>(forward_.pattern[p])];
+  } else {
+    system_.structure().solve(r, y_.data());
+    for (Eigen::Index i = 0; i < nc; ++i)
+      for (std::size_t k = structure_sparse_.offsets[i]; k < structure_sparse_.offsets[i + 1]; ++k)
+        structure_part[i] += structure_sparse_.values[k] * y_[structure_sparse_.rows[k]];
+  }
   double error = 0;
   if (vehicle_regular_) {
     const Eigen::VectorXd yv =
@@ -112,7 +143,6 @@ void BlockSaddlePointSolver::solve(const double* r, const double* r_c, double* x
     rhs_ = structure_part + vehicle_columns_.transpose() * yv - rc;
     solution_ = reduced_lu_.solve(rhs_);
     multipliers = solution_;
-    xs.head(ns) = y_ - z_ * solution_;
     xs.tail(nv) = yv - w_ * solution_;
     if (nv > 0)  // the vehicle's equations A_v x_v + C_vᵀ μ = r_v
       error = check_backward_error(
@@ -124,22 +154,33 @@ void BlockSaddlePointSolver::solve(const double* r, const double* r_c, double* x
     rhs_.tail(nc) = rc - structure_part;
     solution_ = reduced_lu_.solve(rhs_);
     multipliers = solution_.tail(nc);
-    xs.head(ns) = y_ - z_ * solution_.tail(nc);
     xs.tail(nv) = solution_.head(nv);
+  }
+  if (halves_) {  // x_s = Pᵀ L⁻ᵀ (y − W μ)
+    product_.noalias() = forward_.values * multipliers;
+    for (std::size_t p = 0; p < forward_.pattern.size(); ++p)
+      y_[static_cast<Eigen::Index>(forward_.pattern[p])] -= product_[static_cast<Eigen::Index>(p)];
+    halves_->backward_solve(y_.data(), x);
+  } else {  // x_s = A_s⁻¹ r_s − Z μ
+    xs.head(ns) = y_ - z_ * multipliers;
   }
   error = std::max(error,
                    check_backward_error(rhs_ - reduced_ * solution_, reduced_norm_, solution_, rhs_,
                                         limit_, "block saddle-point solve (reduced system)"));
   // The structure's equations A_s x_s + C_sᵀ μ = r_s end to end, where the structure can
-  // apply A_s (this also checks Z, which the constraint check below cannot see).
+  // apply A_s (this also checks W or Z, which the constraint check below cannot see).
   product_.resize(ns);
   if (system_.structure().apply_matrix(x, product_.data())) {
-    const Eigen::VectorXd constraint_force = structure_columns_ * multipliers;
+    constraint_force_.setZero(ns);
+    for (Eigen::Index i = 0; i < nc; ++i)
+      for (std::size_t k = structure_sparse_.offsets[i]; k < structure_sparse_.offsets[i + 1]; ++k)
+        constraint_force_[structure_sparse_.rows[k]] +=
+            structure_sparse_.values[k] * multipliers[i];
     const double scale = product_.lpNorm<Eigen::Infinity>() +
-                         constraint_force.lpNorm<Eigen::Infinity>() +
+                         constraint_force_.lpNorm<Eigen::Infinity>() +
                          rs.head(ns).lpNorm<Eigen::Infinity>();
     const double structure_error =
-        scale > 0 ? (rs.head(ns) - product_ - constraint_force).lpNorm<Eigen::Infinity>() / scale
+        scale > 0 ? (rs.head(ns) - product_ - constraint_force_).lpNorm<Eigen::Infinity>() / scale
                   : 0.0;
     if (!(structure_error <= limit_)) {
       char text[160];

@@ -1,6 +1,7 @@
 // HHT-α with Lagrange multipliers (NewtonStepSolver::constrain): tied masses against the single
-// mass they make, a prescribed motion, and the block (Schur complement) solver against the
-// monolithic UMFPACK one on rows that move every step.
+// mass they make, a prescribed motion, and the block (Schur complement) solver, through the
+// factor's halves (sparse forward solves) and through full solves, against the monolithic
+// UMFPACK one on rows that move every step.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +14,13 @@ namespace railfe {
 namespace {
 
 using Matrix = Eigen::MatrixXd;
+
+// A SparseLinearSystem that hides its factor's halves: the block solver's full-solve path.
+class WithoutHalves : public SparseLinearSystem {
+ public:
+  using SparseLinearSystem::SparseLinearSystem;
+  bool has_triangular_factor() const override { return false; }
+};
 
 Matrix scalar(double x) {
   return Matrix::Constant(1, 1, x);
@@ -125,8 +133,10 @@ TEST(HhtConstraints, BlockAndMonolithicSolversAgree) {
   stiffness.setFromTriplets(kt.begin(), kt.end());
   for (double wheel_mass : {0.5, 0.0}) {
     std::vector<std::vector<double>> histories;
-    for (int which = 0; which < 2; ++which) {
-      SparseLinearSystem structure(mass, {}, stiffness);
+    for (int which = 0; which < 3; ++which) {  // block (halves), monolithic, block (full solves)
+      SparseLinearSystem halves(mass, {}, stiffness);
+      WithoutHalves full(mass, {}, stiffness);
+      SparseLinearSystem& structure = which == 2 ? static_cast<SparseLinearSystem&>(full) : halves;
       Matrix mv(2, 2), kv(2, 2);
       mv << wheel_mass, 0, 0, 5;
       kv << 800, -800, -800, 800;
@@ -139,7 +149,7 @@ TEST(HhtConstraints, BlockAndMonolithicSolversAgree) {
       BlockSaddlePointSolver block(coupled);
       MonolithicSaddlePointSolver monolithic(coupled);
       HhtIntegrator integrator(NewmarkScheme::hht(-0.1), coupled);
-      integrator.constrain(slide, which == 0 ? static_cast<SaddlePointSolver&>(block) : monolithic);
+      integrator.constrain(slide, which != 1 ? static_cast<SaddlePointSolver&>(block) : monolithic);
       std::vector<double> u(n + 2, 0.0), v(n + 2, 0.0), a(n + 2, 0.0), history;
       integrator.initialize(0, u.data(), v.data(), a.data());
       for (int step = 0; step < 400; ++step) {
@@ -147,43 +157,48 @@ TEST(HhtConstraints, BlockAndMonolithicSolversAgree) {
         history.insert(history.end(), u.begin(), u.end());
         history.push_back(integrator.multipliers()[0]);
       }
-      if (which == 0) {
+      if (which != 1) {
+        EXPECT_EQ(structure.has_triangular_factor(), which == 0);
         EXPECT_EQ(coupled.structure_factorizations(), 2u);          // M for a_0, then A once
         EXPECT_LT(block.statistics().worst_backward_error, 1e-12);  // round-off: ~1e3 ε
       }
       histories.push_back(history);
     }
-    double scale = 0, difference = 0;
-    for (std::size_t i = 0; i < histories[0].size(); ++i) {
-      scale = std::max(scale, std::abs(histories[1][i]));
-      difference = std::max(difference, std::abs(histories[0][i] - histories[1][i]));
+    for (int which : {0, 2}) {
+      double scale = 0, difference = 0;
+      for (std::size_t i = 0; i < histories[1].size(); ++i) {
+        scale = std::max(scale, std::abs(histories[1][i]));
+        difference = std::max(difference, std::abs(histories[which][i] - histories[1][i]));
+      }
+      EXPECT_GT(scale, 0);
+      EXPECT_LT(difference, 1e-11 * scale) << "wheel mass " << wheel_mass << ", solver " << which;
     }
-    EXPECT_GT(scale, 0);
-    EXPECT_LT(difference, 1e-11 * scale) << "wheel mass " << wheel_mass;
   }
 }
 
 // A structure whose block solves are off by 1e-6 (its own check turned off, as the block solver
-// permits): the block solver's end-to-end check of the structure equations refuses the step.
+// permits), through the factor's halves or through full solves: the block solver's end-to-end
+// check of the structure equations refuses the step.
 TEST(HhtConstraints, BlockSolverCatchesAWrongStructureSolve) {
   class Sloppy : public SparseLinearSystem {
    public:
-    using SparseLinearSystem::SparseLinearSystem;
+    Sloppy(Eigen::MatrixXd mass, Eigen::MatrixXd stiffness, bool halves)
+        : SparseLinearSystem(mass.sparseView(), {}, stiffness.sparseView()), halves_(halves) {}
+    bool has_triangular_factor() const override { return halves_; }
     void solve_columns(const double* rhs, std::size_t n_columns, double* x) override {
       SparseLinearSystem::solve_columns(rhs, n_columns, x);
       if (n_columns > 1)
         for (std::size_t i = 0; i < n_columns * n_unknowns(); ++i)
           x[i] *= 1 + 1e-6;
     }
+    void forward_solve_sparse(const SparseColumns& b, ForwardSolution& w) override {
+      SparseLinearSystem::forward_solve_sparse(b, w);
+      w.values *= 1 + 1e-6;
+    }
+
+   private:
+    bool halves_;
   };
-  SparseLinearSystem::Matrix mass(2, 2), stiffness(2, 2);
-  mass.setIdentity();
-  stiffness.setIdentity();
-  stiffness *= 100.0;
-  Sloppy structure(mass, {}, stiffness);
-  structure.check_solutions(false);
-  LinearDenseSystem vehicle(scalar(1), scalar(0), scalar(50));
-  CoupledSystem coupled(structure, vehicle);
   class TwoRows : public ConstraintSet {
    public:
     void rows_at(double, ConstraintRows& rows) override {
@@ -193,17 +208,24 @@ TEST(HhtConstraints, BlockSolverCatchesAWrongStructureSolve) {
         rows.add_entry(i, -1.0 - static_cast<double>(i));
       }
     }
-  } rows;
-  BlockSaddlePointSolver block(coupled);
-  HhtIntegrator integrator(NewmarkScheme::hht(0), coupled);
-  integrator.constrain(rows, block);
-  std::vector<double> u(3, 0.0), v(3, 0.0), a(3, 0.0);
-  integrator.initialize(0, u.data(), v.data(), a.data());  // at rest: μ = 0, nothing to see
-  try {
-    integrator.advance(0, 1e-3, u.data(), v.data(), a.data());  // g = 0.01 pulls: μ ≠ 0
-    FAIL() << "expected the end-to-end check to fail";
-  } catch (const RunError& e) {
-    EXPECT_NE(std::string(e.what()).find("structure equations"), std::string::npos) << e.what();
+  };
+  for (bool halves : {true, false}) {
+    Sloppy structure(Matrix::Identity(2, 2), 100 * Matrix::Identity(2, 2), halves);
+    structure.check_solutions(false);
+    LinearDenseSystem vehicle(scalar(1), scalar(0), scalar(50));
+    CoupledSystem coupled(structure, vehicle);
+    TwoRows rows;
+    BlockSaddlePointSolver block(coupled);
+    HhtIntegrator integrator(NewmarkScheme::hht(0), coupled);
+    integrator.constrain(rows, block);
+    std::vector<double> u(3, 0.0), v(3, 0.0), a(3, 0.0);
+    integrator.initialize(0, u.data(), v.data(), a.data());  // at rest: μ = 0, nothing to see
+    try {
+      integrator.advance(0, 1e-3, u.data(), v.data(), a.data());  // g = 0.01 pulls: μ ≠ 0
+      FAIL() << "expected the end-to-end check to fail, halves " << halves;
+    } catch (const RunError& e) {
+      EXPECT_NE(std::string(e.what()).find("structure equations"), std::string::npos) << e.what();
+    }
   }
 }
 

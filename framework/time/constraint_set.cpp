@@ -1,5 +1,7 @@
 #include "framework/time/constraint_set.hpp"
 
+#include <algorithm>
+
 namespace railfe {
 
 void ConstraintRows::clear() {
@@ -35,6 +37,12 @@ void ConstraintRows::add_transpose(const double* lambda, double scale, double* f
   for (std::size_t i = 0; i < size(); ++i)
     for (std::size_t k = offsets[i]; k < offsets[i + 1]; ++k)
       f[columns[k]] += scale * values[k] * lambda[i];
+}
+
+void ConstraintSet::rates(double, const double*, const double*, std::size_t n_rows,
+                          double* velocity, double* acceleration) {
+  std::fill(velocity, velocity + n_rows, 0.0);
+  std::fill(acceleration, acceleration + n_rows, 0.0);
 }
 
 bool ConstraintRows::same_matrix(const ConstraintRows& other) const {

@@ -49,6 +49,20 @@ class ConstraintSet {
     (void)time, (void)u, (void)lambda;
     return false;
   }
+  /// Called after the step to \p time has been taken (u, v, a updated) by a scheme whose
+  /// spectral radius at infinity is \p spectral_radius (1: no numerical damping). True when the
+  /// set asks for a consistent restart there (an impact: a constraint engaged with a velocity
+  /// jump the displacement rows cannot take); NewtonStepSolver::after_step() then projects v
+  /// onto the velocity rows and solves a and λ afresh (docs/theory.md, "Constraints in HHT-α").
+  virtual bool needs_restart(double time, double spectral_radius) {
+    (void)time, (void)spectral_radius;
+    return false;
+  }
+  /// The rates of the \p n_rows rows of rows_at(\p time) for (u, v): \p velocity = ġ − Ċ u,
+  /// the right-hand side of C v, and \p acceleration = g̈ − C̈ u − 2 Ċ v, that of C a (one per
+  /// row each). Default: zero (rows and g that do not change in time).
+  virtual void rates(double time, const double* u, const double* v, std::size_t n_rows,
+                     double* velocity, double* acceleration);
 };
 
 /// The linear solves of a constrained Newton iteration: x and μ with

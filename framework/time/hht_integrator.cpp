@@ -23,6 +23,7 @@ int HhtIntegrator::advance(double time, double dt, double* u, double* v, double*
     const double start = time + dt * static_cast<double>(done) * scale, step = dt * scale;
     try {
       integrator_.step(start, step, solver_, u, v, a);
+      solver_.after_step(start + step, u, v, a);  // an impact's consistent restart, if any
     } catch (const StepNotConverged& failure) {
       if (level == cut_back_.max_halvings) {
         char limit[160];

@@ -86,6 +86,42 @@ void NewtonStepSolver::initial_acceleration(double time, const double* u, const 
   cached_force_ = force_;
 }
 
+bool NewtonStepSolver::after_step(double time, const double* u, double* v, double* a) {
+  if (constraints_ == nullptr || !constraints_->needs_restart(time, spectral_radius_))
+    return false;
+  const std::size_t n = u_.size();
+  rows_old_.clear();
+  constraints_->rows_at(time, rows_old_);
+  const std::size_t nc = rows_old_.size();
+  std::vector<double> velocity_rate(nc), acceleration_rate(nc);
+  constraints_->rates(time, u, v, nc, velocity_rate.data(), acceleration_rate.data());
+  saddle_->factor(u, v, {1.0, 0.0, 0.0, 0.0}, rows_old_);
+  ++statistics_.factorizations;
+  linear_factor_valid_ = false;
+  // [M Cᵀ; C 0] [Δv; μ] = [0; ġ − Ċ u − C v]: the mass-weighted projection of v.
+  constraint_residual_.resize(nc);
+  mu_.resize(nc);
+  rows_old_.multiply(v, constraint_residual_.data());
+  for (std::size_t i = 0; i < nc; ++i)
+    constraint_residual_[i] = velocity_rate[i] - constraint_residual_[i];
+  std::fill(residual_.begin(), residual_.end(), 0.0);
+  saddle_->solve(residual_.data(), constraint_residual_.data(), correction_.data(), mu_.data());
+  for (std::size_t i = 0; i < n; ++i)
+    v[i] += correction_[i];
+  // [M Cᵀ; C 0] [a; λ] = [f − g(u, v); g̈ − C̈ u − 2 Ċ v].
+  system_.external_force(time, residual_.data());
+  balance_force(u, v, force_.data());
+  for (std::size_t i = 0; i < n; ++i)
+    residual_[i] -= force_[i];
+  lambda_old_.assign(nc, 0.0);
+  saddle_->solve(residual_.data(), acceleration_rate.data(), a, lambda_old_.data());
+  cached_u_.assign(u, u + n);
+  cached_v_.assign(v, v + n);
+  cached_force_ = force_;
+  ++statistics_.restarts;
+  return true;
+}
+
 void NewtonStepSolver::fail(const StepState& state, const std::string& failure) const {
   const double time_old = state.time_next - state.dt;
   char where[128];
@@ -103,6 +139,7 @@ void NewtonStepSolver::solve_for_acceleration(const StepState& state, double* a)
   } else {
     if (state.scheme->beta == 0)
       throw std::logic_error("constraints need an implicit scheme (beta > 0)");
+    spectral_radius_ = state.scheme->spectral_radius_at_infinity();
     // A constraint that releases or engages at t_{n+1} repeats the step with the new rows.
     const int most_changes = 8;
     for (int change = 0;; ++change) {

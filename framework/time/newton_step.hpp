@@ -60,6 +60,7 @@ struct NewtonStatistics {
   std::size_t iterations = 0;          ///< Newton corrections over all converged steps
   std::size_t factorizations = 0;      ///< factor() calls
   std::size_t force_evaluations = 0;   ///< internal_force() calls
+  std::size_t restarts = 0;            ///< consistent restarts after a step (after_step())
   int last_iterations = 0;             ///< corrections in the last converged step
   int most_iterations = 0;             ///< most corrections in one converged step
   std::vector<double> last_residuals;  ///< ‖R‖ at each iterate of the last attempt
@@ -86,6 +87,13 @@ class NewtonStepSolver : public SecondOrderProblem {
   /// (neither owned; both must outlive this solver; nullptr for both detaches). Needs β > 0.
   /// Call before initial_acceleration(), which then finds λ_0 with a.
   void constrain(ConstraintSet* constraints, SaddlePointSolver* solver);
+  /// After the step to \p time (u, v, a updated by the integrator): where the constraints ask
+  /// for it (ConstraintSet::needs_restart(), an impact), projects \p v onto C v = ġ − Ċ u in
+  /// the mass metric (the velocity jump of a plastic impact) and solves \p a and λ afresh from
+  /// the equation of motion with C a = g̈ − C̈ u − 2 Ċ v, so that the step-to-step mode the
+  /// jump would excite stays at rest. Returns whether it did; costs two saddle-point solves
+  /// with M (the structure factored again).
+  bool after_step(double time, const double* u, double* v, double* a);
   /// λ_{n+1} of the last converged step (one per row of constraint_rows()); λ holds the
   /// constraint forces −Cᵀλ acting on the unknowns.
   const std::vector<double>& multipliers() const { return lambda_old_; }
@@ -119,6 +127,7 @@ class NewtonStepSolver : public SecondOrderProblem {
   SaddlePointSolver* saddle_ = nullptr;
   ConstraintRows rows_old_, rows_next_;  // C_n, g_n and C_{n+1}, g_{n+1}
   std::vector<double> lambda_old_, lambda_, constraint_residual_, mu_, constraint_force_;
+  double spectral_radius_ = 1;  ///< ρ∞ of the scheme of the last constrained step
 };
 
 }  // namespace railfe

@@ -11,14 +11,16 @@
 #include <functional>
 
 #include "framework/time/second_order_system.hpp"
+#include "framework/time/triangular_solves.hpp"
 
 namespace railfe {
 
 /// ‖A‖∞, the largest absolute row sum of \p matrix.
 double infinity_norm(const Eigen::SparseMatrix<double>& matrix);
 
-/// A linear sparse second-order system; K is also the Rayleigh stiffness K_R.
-class SparseLinearSystem : public SecondOrderSystem {
+/// A linear sparse second-order system; K is also the Rayleigh stiffness K_R. Its supernodal
+/// factor also offers the triangular solves (TriangularSolves) of a block saddle-point solver.
+class SparseLinearSystem : public SecondOrderSystem, public TriangularSolves {
  public:
   using Matrix = Eigen::SparseMatrix<double>;  ///< column-major, int indices
 
@@ -28,6 +30,8 @@ class SparseLinearSystem : public SecondOrderSystem {
   SparseLinearSystem(Matrix mass, Matrix damping, Matrix stiffness,
                      std::function<void(double, double*)> load = {},
                      double backward_error_limit = 1e-10);
+  /// Frees CHOLMOD's solve workspace.
+  ~SparseLinearSystem() override;
 
   /// The number of rows of M.
   std::size_t n_unknowns() const override { return static_cast<std::size_t>(mass_.rows()); }
@@ -55,16 +59,39 @@ class SparseLinearSystem : public SecondOrderSystem {
   /// the coupled solution against apply_matrix() may turn it off.
   void check_solutions(bool check) { check_ = check; }
 
+  /// Whether A is factored as a supernodal L Lᵀ (CHOLMOD may choose so; normally true).
+  bool has_triangular_factor() const override { return !parent_.empty(); }
+  /// W = L⁻¹ P B over the supernodes on the paths from B's rows to the root.
+  void forward_solve_sparse(const SparseColumns& b, ForwardSolution& w) override;
+  /// y = L⁻¹ P b.
+  void forward_solve(const double* b, double* y) override;
+  /// x = Pᵀ L⁻ᵀ y.
+  void backward_solve(const double* y, double* x) override;
+
  private:
+  /// Eigen's CHOLMOD wrapper with its factor in reach.
+  class Cholesky : public Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> {
+   public:
+    /// CHOLMOD's factor (null before factorize()).
+    cholmod_factor* factor() const { return m_cholmodFactor; }
+  };
   void check(const Eigen::MatrixXd& b, const Eigen::MatrixXd& x) const;
+  void map_supernodes();
+  void triangular_solve(int system, double* y);
 
   Matrix mass_, damping_, stiffness_, matrix_;
   std::function<void(double, double*)> load_;
   double limit_;
   double norm_infinity_ = 0;  ///< ‖A‖∞ of the last factor()
-  bool analyzed_ = false;
-  bool check_ = true;  ///< whether CHOLMOD has ordered A's pattern
-  Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower> cholesky_;
+  bool analyzed_ = false;     ///< whether CHOLMOD has ordered A's pattern
+  bool check_ = true;         ///< whether solve() checks its backward error
+  Cholesky cholesky_;
+  std::vector<int> inverse_permutation_;  // row of P A Pᵀ of each unknown
+  std::vector<int> supernode_, parent_;   // supernode of each row; each supernode's parent
+  std::vector<int> local_, reached_;      // forward_solve_sparse() workspace
+  std::vector<char> marked_;
+  Eigen::MatrixXd update_;
+  cholmod_dense *solution_ = nullptr, *work_y_ = nullptr, *work_e_ = nullptr;
 };
 
 }  // namespace railfe

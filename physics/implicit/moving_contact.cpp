@@ -1,6 +1,7 @@
 #include "physics/implicit/moving_contact.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <limits>
@@ -81,7 +82,8 @@ MovingContacts::MovingContacts(BeamPath path, std::vector<MovingContactPoint> po
       points_(std::move(points)),
       engaged_(points_.size(), true),
       vertical_row_(points_.size(), -1),
-      changed_at_(points_.size(), -std::numeric_limits<double>::infinity()) {}
+      changed_at_(points_.size(), -std::numeric_limits<double>::infinity()),
+      alternation_(points_.size()) {}
 
 double MovingContacts::position(std::size_t index, double time) const {
   return points_[index].start + points_[index].speed * time;
@@ -169,7 +171,74 @@ bool MovingContacts::accept(double time, const double* u, const double* lambda) 
       }
     }
   }
+  if (!changed)  // the step stands: follow each engaged point's step-to-step force mode
+    for (std::size_t p = 0; p < points_.size(); ++p) {
+      Alternation& m = alternation_[p];
+      if (!engaged_[p] || changed_at_[p] == time) {
+        m = Alternation();
+        continue;
+      }
+      const double force = -lambda[vertical_row_[p]];
+      if (m.seen == 2) {
+        const double second = force - 2 * m.force[0] + m.force[1];
+        // Alternating in sign and growing against the one two steps back: the mode.
+        const bool grows = second * m.last < 0 && std::abs(second) > std::abs(m.before);
+        m.run = grows ? m.run + 1 : 0;
+        m.before = m.last;
+        m.last = second;
+        // 10 such steps in a row, above 1e-3 of the force (an alternation of 0.025 %).
+        if (m.run >= 10 && std::abs(second) > 1e-3 * std::abs(force)) {
+          restart_ = true;
+          m = Alternation();
+          continue;
+        }
+      }
+      m.seen = std::min(m.seen + 1, 2);
+      m.force[1] = m.force[0];
+      m.force[0] = force;
+    }
   return changed;
+}
+
+bool MovingContacts::needs_restart(double time, double spectral_radius) {
+  bool restart = restart_ && spectral_radius >= 1 - 1e-12;
+  restart_ = false;
+  for (std::size_t p = 0; p < points_.size(); ++p)
+    if (engaged_[p] && changed_at_[p] == time)
+      restart = true;
+  if (restart)  // the restart sets the multipliers afresh: follow the mode from there
+    for (Alternation& m : alternation_)
+      m = Alternation();
+  return restart;
+}
+
+void MovingContacts::rates(double time, const double* u, const double* v, std::size_t n_rows,
+                           double* velocity, double* acceleration) {
+  const double h = 0.01;  // m: central differences over the contact patch's scale
+  std::size_t row = 0;
+  for (std::size_t p = 0; p < points_.size() && row < n_rows; ++p) {
+    if (!engaged_[p])
+      continue;
+    const MovingContactPoint& point = points_[p];
+    const double s = position(p, time);
+    const double below = std::max(0.0, s - h), above = std::min(path_.length(), s + h);
+    for (int axis : {2, 1}) {
+      if (axis == 1 && point.lateral_unknown < 0)
+        continue;
+      const auto height = [&](double x) {
+        return surface(x, axis, u) +
+               (axis == 2 ? point.irregularity.vertical(x) : point.irregularity.lateral(x));
+      };
+      const double slope = (height(above) - height(below)) / (above - below);
+      const double curvature = s - h >= 0 && s + h <= path_.length()
+                                   ? (height(above) - 2 * height(s) + height(below)) / (h * h)
+                                   : 0.0;
+      const double slope_v = (surface(above, axis, v) - surface(below, axis, v)) / (above - below);
+      velocity[row] = point.speed * slope;
+      acceleration[row] = point.speed * point.speed * curvature + 2 * point.speed * slope_v;
+      ++row;
+    }
+  }
 }
 
 std::vector<double> MovingContacts::contact_forces(const double* lambda) const {

@@ -93,6 +93,16 @@ class MovingContacts : public ConstraintSet {
   /// Releases points whose vertical force pulls (λ > 0), engages released points the vehicle
   /// reaches; records each change; true when anything changed.
   bool accept(double time, const double* u, const double* lambda) override;
+  /// True when a point engaged at \p time: the landing's velocity jump is taken as a plastic
+  /// impact (NewtonStepSolver::after_step()), which keeps the contact from chattering. Under a
+  /// scheme without numerical damping (\p spectral_radius 1, α = 0) also true when a point's
+  /// contact force has alternated step to step and grown for 10 steps to 0.1 % of itself: the
+  /// multipliers' undamped mode, driven by the moving rows, which the restart sets at rest.
+  bool needs_restart(double time, double spectral_radius) override;
+  /// ġ − Ċ u = ṡ d(r + surface)/ds and g̈ − C̈ u − 2 Ċ v = ṡ² d²(r + surface)/ds² +
+  /// 2 ṡ d(surface of v)/ds of each row, by central differences over ±1 cm of s.
+  void rates(double time, const double* u, const double* v, std::size_t n_rows, double* velocity,
+             double* acceleration) override;
 
   /// Vertical contact force (N, compression positive) of each point for the multipliers
   /// \p lambda of the rows last written at \p time (0 for a released point).
@@ -117,6 +127,15 @@ class MovingContacts : public ConstraintSet {
   std::vector<bool> engaged_;
   std::vector<long> vertical_row_;  // row of each point's vertical constraint, or −1
   std::vector<double> changed_at_;  // time of each point's last release or engagement
+  /// The step-to-step mode of one point's contact force F: its second differences.
+  struct Alternation {
+    double force[2] = {0, 0};     // F at the last two accepted steps
+    int seen = 0;                 // accepted steps since the last reset (up to 3)
+    double last = 0, before = 0;  // the last two second differences
+    int run = 0;  // steps in a row whose second difference alternates in sign and grows
+  };
+  std::vector<Alternation> alternation_;
+  bool restart_ = false;  // a point's force alternated: restart after this step
   std::vector<ContactEvent> events_;
 };
 

@@ -148,6 +148,7 @@ CrossingResult run_crossing(const CrossingSettings& s) {
   result.structure_unknowns = static_cast<std::size_t>(ns);
   result.steps = integrator.newton_statistics().steps;
   result.iterations = integrator.newton_statistics().iterations;
+  result.restarts = integrator.newton_statistics().restarts;
   result.structure_factorizations = s.moving_force ? integrator.newton_statistics().factorizations
                                                    : coupled.structure_factorizations();
   return result;

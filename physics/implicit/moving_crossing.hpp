@@ -48,7 +48,8 @@ struct CrossingResult {
   std::size_t unknowns = 0, structure_unknowns = 0;  ///< sizes
   std::size_t steps = 0, iterations = 0;             ///< Newton counters
   std::size_t structure_factorizations = 0;          ///< CHOLMOD factorizations of A_s
-  double wall_seconds = 0, cpu_seconds = 0;          ///< the time loop (after set-up)
+  std::size_t restarts = 0;  ///< consistent restarts (landings, NewtonStepSolver::after_step())
+  double wall_seconds = 0, cpu_seconds = 0;  ///< the time loop (after set-up)
 };
 
 /// Runs the crossing.

@@ -65,7 +65,8 @@ int run(int argc, char** argv) {
   std::cout << "unknowns=" << r.unknowns << "\nstructure_unknowns=" << r.structure_unknowns
             << "\nsteps=" << r.steps << "\nnewton_iterations=" << r.iterations
             << "\nstructure_factorizations=" << r.structure_factorizations
-            << "\nwall_s=" << r.wall_seconds << "\ncpu_s=" << r.cpu_seconds << "\n";
+            << "\nrestarts=" << r.restarts << "\nwall_s=" << r.wall_seconds
+            << "\ncpu_s=" << r.cpu_seconds << "\n";
   for (const ContactEvent& e : r.events)
     std::cout << "event=" << (e.separation ? "separation" : "contact") << ',' << e.contact << ','
               << e.time << ',' << e.position << '\n';

@@ -98,31 +98,66 @@ TEST(MovingContacts, BlockAndMonolithicAgreeOnSprungMass) {
   }
 }
 
-// A wheel with mass over a 10 mm bump at 100 km/h leaves the surface near the crest, where the
-// surface's downward acceleration h/2 (2π/l)² v² = 152 m/s² exceeds what gravity and the
-// suspension give the wheel, and lands once, 0.06 m further; the contact force never pulls.
-// Without the bump it stays in contact. (α = −0.3: the index-3 multiplier mode of a constrained
-// mass, excited by the landing, is undamped at α = 0 and makes the wheel chatter at α = −0.05.)
-TEST(MovingContacts, SeparationOverABumpIsReported) {
-  CrossingSettings s;
+// A 500 kg wheel over a 10 mm, 1 m bump at 100 km/h (Δt = 0.5 ms, HHT \p alpha): one release,
+// then one landing with its consistent restart; the contact force never pulls.
+CrossingResult expect_one_landing(double alpha, CrossingSettings& s) {
   s.wheel_mass = 500;
   s.vehicle_dofs = 2;
   s.bump_height = 0.01;
   s.bump_length = 1.0;
   s.bump_start = 12;
   s.dt = 5e-4;
-  s.alpha = -0.3;
+  s.alpha = alpha;
   const CrossingResult r = run_crossing(s);
-  ASSERT_EQ(r.events.size(), 2u);
-  EXPECT_TRUE(r.events[0].separation);
-  EXPECT_GT(r.events[0].position, s.bump_start + 0.25 * s.bump_length);  // curvature < 0
-  EXPECT_LT(r.events[0].position, s.bump_start + 0.75 * s.bump_length);
-  EXPECT_FALSE(r.events[1].separation);
-  EXPECT_GT(r.events[1].time, r.events[0].time);
+  EXPECT_EQ(r.events.size(), 2u) << "alpha " << alpha;
+  if (r.events.size() == 2) {
+    EXPECT_TRUE(r.events[0].separation);
+    EXPECT_FALSE(r.events[1].separation);
+    EXPECT_GT(r.events[1].time, r.events[0].time);
+  }
+  EXPECT_EQ(r.restarts, 1u) << "alpha " << alpha;
   for (double f : r.contact_force)
     EXPECT_GE(f, 0.0);
+  return r;
+}
+
+// The wheel leaves the surface near the crest, where the surface's downward acceleration
+// h/2 (2π/l)² v² = 152 m/s² exceeds what gravity and the suspension give the wheel, and lands
+// once, 0.06 m further. Without the bump it stays in contact.
+TEST(MovingContacts, SeparationOverABumpIsReported) {
+  CrossingSettings s;
+  const CrossingResult r = expect_one_landing(-0.3, s);
+  ASSERT_FALSE(r.events.empty());
+  EXPECT_GT(r.events[0].position, s.bump_start + 0.25 * s.bump_length);  // curvature < 0
+  EXPECT_LT(r.events[0].position, s.bump_start + 0.75 * s.bump_length);
   s.bump_height = 0;
   EXPECT_TRUE(run_crossing(s).events.empty());
+}
+
+// The same landing at α = −0.05, where the displacement rows alone reflect the landing
+// velocity into a step-to-step mode that decays by at most ρ∞ = 0.905 a step (45–91 releases and
+// engagements before the plastic-impact restart).
+TEST(MovingContacts, LandingAtSmallAlphaDoesNotChatter) {
+  CrossingSettings s;
+  expect_one_landing(-0.05, s);
+}
+
+// A 500 kg wheel under 5750 kg on a smooth beam at α = 0 (no numerical damping): the moving
+// rows drive the multipliers' step-to-step mode, which grows without bound (before the restarts
+// it separated falsely after 0.44 s, with forces up to 12 MN); restarted whenever it grows, the
+// contact force stays within 3 % of the weight (6250 kg × 9.81 m/s² = 61,312.5 N) the whole
+// crossing, as it does at α = −0.05 (within 1.5 %).
+TEST(MovingContacts, WheelWithMassStaysInContactAtAlphaZero) {
+  CrossingSettings s;
+  s.wheel_mass = 500;
+  s.vehicle_dofs = 2;
+  s.alpha = 0;
+  const CrossingResult r = run_crossing(s);
+  EXPECT_TRUE(r.events.empty());
+  EXPECT_GT(r.restarts, 0u);
+  const double weight = (s.vehicle_mass + s.wheel_mass) * 9.81;
+  for (double f : r.contact_force)
+    EXPECT_NEAR(f, weight, 0.03 * weight);
 }
 
 // Irregularities from a CSV file (linear between rows) on the right-hand side of a vertical and
