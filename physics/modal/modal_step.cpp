@@ -263,6 +263,10 @@ void ModalStep::check_structural(const CheckContext& context) {
       solid_beam_links(read_solid_beam_ties(*parameters_), mesh, deck, context.path);
   links_.insert(links_.end(), tie_links.begin(), tie_links.end());
   links_path_ = tie_links.empty() ? "Mesh" : context.path + "/Solid-beam ties";
+  const std::vector<int> node_dofs = DofMap::mesh_node_dofs(mesh);
+  check_rigid_links(
+      links_, [&](GlobalIndex node) { return has_structural_blocks(mesh) ? node_dofs[node] : 3; },
+      deck, links_path_);
   if (!has_structural_blocks(mesh)) {
     if (context.model.has_section("Sections"))  // checked, though nothing uses it
       structural_sections(context.model, step);

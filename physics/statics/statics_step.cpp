@@ -69,6 +69,10 @@ void StaticsStep::check(const CheckContext& context) {
       solid_beam_links(read_solid_beam_ties(*parameters_), mesh, deck, context.path);
   links_.insert(links_.end(), tie_links.begin(), tie_links.end());
   links_path_ = tie_links.empty() ? "Mesh" : context.path + "/Solid-beam ties";
+  // Refused here, before any output: a solid model's nodes all carry 3 DOFs.
+  const std::vector<int> node_dofs = DofMap::mesh_node_dofs(mesh);
+  check_rigid_links(
+      links_, [&](GlobalIndex node) { return sections_ ? node_dofs[node] : 3; }, deck, links_path_);
   for (const auto& force : conditions_.nodal_forces) {
     bool attached = false;
     for (GlobalIndex node : mesh.node_set(force.node_set, deck, "").nodes) {
