@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <optional>
 #include <sstream>
+#include <tuple>
 
 #include "framework/assembly/fe_matrix.hpp"
 #include "framework/assembly/linear_constraints.hpp"
@@ -258,15 +259,8 @@ void ModalStep::check_structural(const CheckContext& context) {
   sections_.reset();
   dofs_per_node_ = 3;
   mixed_ = false;
-  links_ = mesh_rigid_links(mesh);
-  const auto tie_links =
-      solid_beam_links(read_solid_beam_ties(*parameters_), mesh, deck, context.path);
-  links_.insert(links_.end(), tie_links.begin(), tie_links.end());
-  links_path_ = tie_links.empty() ? "Mesh" : context.path + "/Solid-beam ties";
-  const std::vector<int> node_dofs = DofMap::mesh_node_dofs(mesh);
-  check_rigid_links(
-      links_, [&](GlobalIndex node) { return has_structural_blocks(mesh) ? node_dofs[node] : 3; },
-      deck, links_path_);
+  std::tie(links_, links_path_) =
+      step_rigid_links(*parameters_, mesh, has_structural_blocks(mesh), deck, context.path);
   if (!has_structural_blocks(mesh)) {
     if (context.model.has_section("Sections"))  // checked, though nothing uses it
       structural_sections(context.model, step);

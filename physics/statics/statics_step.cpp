@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 
 #include "framework/assembly/fe_matrix.hpp"
 #include "framework/assembly/linear_constraints.hpp"
@@ -64,15 +65,9 @@ void StaticsStep::check(const CheckContext& context) {
     if (context.model.has_section("Sections"))  // checked, though nothing uses it
       structural_sections(context.model, step);
   }
-  links_ = mesh_rigid_links(mesh);
-  const auto tie_links =
-      solid_beam_links(read_solid_beam_ties(*parameters_), mesh, deck, context.path);
-  links_.insert(links_.end(), tie_links.begin(), tie_links.end());
-  links_path_ = tie_links.empty() ? "Mesh" : context.path + "/Solid-beam ties";
-  // Refused here, before any output: a solid model's nodes all carry 3 DOFs.
-  const std::vector<int> node_dofs = DofMap::mesh_node_dofs(mesh);
-  check_rigid_links(
-      links_, [&](GlobalIndex node) { return sections_ ? node_dofs[node] : 3; }, deck, links_path_);
+  // Refused here, before any output.
+  std::tie(links_, links_path_) =
+      step_rigid_links(*parameters_, mesh, sections_.has_value(), deck, context.path);
   for (const auto& force : conditions_.nodal_forces) {
     bool attached = false;
     for (GlobalIndex node : mesh.node_set(force.node_set, deck, "").nodes) {
