@@ -13,14 +13,16 @@ std::string node_name(GlobalIndex node) {
   return "node " + std::to_string(node + 1);
 }
 
-// Throws InputError unless the links are a forest of depth one with 6-DOF roots.
-void check_links(const std::vector<RigidLink>& links, const DofMap& dofs, const std::string& deck,
-                 const std::string& path) {
+}  // namespace
+
+void check_rigid_links(const std::vector<RigidLink>& links,
+                       const std::function<int(GlobalIndex)>& node_dofs, const std::string& deck,
+                       const std::string& path) {
   std::map<GlobalIndex, const RigidLink*> master_of, carrier_of;
   for (const auto& link : links)
     master_of.emplace(link.master, &link);
   for (const auto& link : links) {
-    if (dofs.dofs_of_global_node(link.master) != 6) {
+    if (node_dofs(link.master) != 6) {
       throw_input_error(deck, path,
                         link.name + ": master " + node_name(link.master) +
                             " has no rotation DOFs (a solid node, or a node no element uses)",
@@ -49,8 +51,6 @@ void check_links(const std::vector<RigidLink>& links, const DofMap& dofs, const 
   }
 }
 
-}  // namespace
-
 std::vector<RigidLink> mesh_rigid_links(const Mesh& mesh) {
   std::vector<RigidLink> links;
   for (const auto& block : mesh.blocks) {
@@ -71,7 +71,8 @@ std::vector<RigidLink> mesh_rigid_links(const Mesh& mesh) {
 void add_rigid_links(const std::vector<RigidLink>& links, const DofMap& dofs,
                      LinearConstraints& constraints, const std::string& deck,
                      const std::string& path) {
-  check_links(links, dofs, deck, path);
+  check_rigid_links(
+      links, [&](GlobalIndex node) { return dofs.dofs_of_global_node(node); }, deck, path);
   const Mesh& mesh = dofs.partition().mesh();
   const auto& owners = dofs.partition().node_ranks();
   const int rank = dofs.partition().comm().rank();

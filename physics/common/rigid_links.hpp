@@ -5,6 +5,7 @@
 /// equations), eliminated by LinearConstraints' u = T ū. Solid nodes (3 DOFs) follow with their
 /// translations only. Links do not chain: a node carried by one link may not carry others.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,12 @@ struct RigidLink {
 
 /// The links of the mesh's rigid_link blocks: each element's first node carries the others.
 std::vector<RigidLink> mesh_rigid_links(const Mesh& mesh);
+
+/// The checks add_rigid_links() makes, for a step's check before any DOF map exists:
+/// \p node_dofs gives the DOF count of a global mesh node in the map the step will use.
+void check_rigid_links(const std::vector<RigidLink>& links,
+                       const std::function<int(GlobalIndex)>& node_dofs, const std::string& deck,
+                       const std::string& path);
 
 /// Adds the multi-point constraints of \p links to \p constraints (every rank passes the same
 /// links; each keeps the equations of the slaves it owns) without finalizing them. Slaves that

@@ -30,13 +30,13 @@ void element_coordinates(const MeshPartition& partition, const LocalBlock& block
 
 namespace {
 
-// Adds the matrix \p element_matrix(block, x, out) gives each local hex8 element into \p A.
+// Adds the matrix \p element_matrix(block, x, out) gives each local hex8 element into \p A
+// (open for assembly).
 template <typename ElementMatrix>
-void assemble_hex8_matrix(FeMatrix& A, ElementMatrix element_matrix, Progress* progress) {
+void add_hex8_matrix(FeMatrix& A, ElementMatrix element_matrix, Progress* progress) {
   const MeshPartition& partition = A.dofs().partition();
   alignas(64) double matrix[24 * 24];
   double x[8][3];
-  A.begin_assembly();
   for (std::size_t b = 0; b < partition.blocks().size(); ++b) {
     const auto& block = partition.blocks()[b];
     if (partition.mesh().blocks[block.block].type != ElementType::hex8)
@@ -50,14 +50,20 @@ void assemble_hex8_matrix(FeMatrix& A, ElementMatrix element_matrix, Progress* p
         progress->update(first + e);
     }
   }
-  A.end_assembly();
 }
 
 }  // namespace
 
 void assemble_elastic_stiffness(FeMatrix& K, const MaterialTable& materials, Progress* progress,
                                 double one_point_kappa) {
-  assemble_hex8_matrix(
+  K.begin_assembly();
+  add_elastic_stiffness(K, materials, progress, one_point_kappa);
+  K.end_assembly();
+}
+
+void add_elastic_stiffness(FeMatrix& K, const MaterialTable& materials, Progress* progress,
+                           double one_point_kappa) {
+  add_hex8_matrix(
       K,
       [&](int block, const double x[8][3], double* matrix) {
         const ElasticMaterial& material = materials.of_block(block);
@@ -73,7 +79,13 @@ void assemble_elastic_stiffness(FeMatrix& K, const MaterialTable& materials, Pro
 }
 
 void assemble_mass(FeMatrix& M, const MaterialTable& materials, bool lumped) {
-  assemble_hex8_matrix(
+  M.begin_assembly();
+  add_mass(M, materials, lumped);
+  M.end_assembly();
+}
+
+void add_mass(FeMatrix& M, const MaterialTable& materials, bool lumped) {
+  add_hex8_matrix(
       M,
       [&](int block, const double x[8][3], double* matrix) {
         hex8_mass(x, materials.of_block(block).density, lumped, matrix);

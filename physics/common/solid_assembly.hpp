@@ -28,9 +28,19 @@ void element_coordinates(const MeshPartition& partition, const LocalBlock& block
 void assemble_elastic_stiffness(FeMatrix& K, const MaterialTable& materials,
                                 Progress* progress = nullptr, double one_point_kappa = -1);
 
+/// Adds the stiffness of every local hex8 element, as assemble_elastic_stiffness() does, into
+/// \p K open for assembly (between FeMatrix::begin_assembly() and end_assembly()), so that
+/// solids and structural elements go into one matrix on a mixed DOF map.
+void add_elastic_stiffness(FeMatrix& K, const MaterialTable& materials,
+                           Progress* progress = nullptr, double one_point_kappa = -1);
+
 /// Assembles the mass of every local hex8 element into \p M (collective): consistent, or lumped
 /// (row sums) when \p lumped.
 void assemble_mass(FeMatrix& M, const MaterialTable& materials, bool lumped);
+
+/// Adds the hex8 mass, as assemble_mass() does, into \p M open for assembly (see
+/// add_elastic_stiffness()).
+void add_mass(FeMatrix& M, const MaterialTable& materials, bool lumped);
 
 /// Adds gravity, surface loads and nodal forces into \p forces over the owned DOFs of \p dofs,
 /// which is overwritten (collective).

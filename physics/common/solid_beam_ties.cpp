@@ -56,6 +56,20 @@ std::vector<RigidLink> solid_beam_links(const std::vector<SolidBeamTie>& ties, c
   return links;
 }
 
+std::pair<std::vector<RigidLink>, std::string> step_rigid_links(const Teuchos::ParameterList& step,
+                                                                const Mesh& mesh, bool structural,
+                                                                const std::string& deck,
+                                                                const std::string& path) {
+  std::vector<RigidLink> links = mesh_rigid_links(mesh);
+  const auto ties = solid_beam_links(read_solid_beam_ties(step), mesh, deck, path);
+  links.insert(links.end(), ties.begin(), ties.end());
+  const std::string where = ties.empty() ? "Mesh" : path + "/Solid-beam ties";
+  const std::vector<int> node_dofs = DofMap::mesh_node_dofs(mesh);
+  check_rigid_links(
+      links, [&](GlobalIndex node) { return structural ? node_dofs[node] : 3; }, deck, where);
+  return {links, where};
+}
+
 RigidLink solid_beam_link(GlobalIndex beam_node, std::vector<GlobalIndex> solid_nodes,
                           const std::string& name) {
   RigidLink link;

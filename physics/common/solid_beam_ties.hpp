@@ -6,6 +6,7 @@
 /// (add_solid_beam_tie_parameters()); a step adds the links before it finalizes its constraints.
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Teuchos_ParameterList.hpp>
@@ -34,6 +35,17 @@ std::vector<SolidBeamTie> read_solid_beam_ties(const Teuchos::ParameterList& ste
 /// node, or the solid set holds the beam node.
 std::vector<RigidLink> solid_beam_links(const std::vector<SolidBeamTie>& ties, const Mesh& mesh,
                                         const std::string& deck, const std::string& path);
+
+/// The rigid links a step applies, checked before any DOF map exists (see check_rigid_links()):
+/// the mesh's rigid_link blocks, then the Solid-beam ties of validated step list \p step, and
+/// where their errors point ("Mesh", or the ties under the step's \p path). \p structural: the
+/// step uses DofMap::for_mesh()'s counts (a model with beams, springs or point masses); else
+/// every node carries 3 DOFs. Throws InputError naming \p deck as solid_beam_links() and
+/// check_rigid_links() do.
+std::pair<std::vector<RigidLink>, std::string> step_rigid_links(const Teuchos::ParameterList& step,
+                                                                const Mesh& mesh, bool structural,
+                                                                const std::string& deck,
+                                                                const std::string& path);
 
 /// The rigid link that ties solid nodes \p solid_nodes to beam node \p beam_node (the library
 /// form, for code that builds models without a deck).

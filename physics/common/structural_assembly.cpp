@@ -2,7 +2,9 @@
 
 #include <Tpetra_Vector.hpp>
 
+#include <algorithm>
 #include <stdexcept>
+#include <string>
 
 #include "framework/base/error.hpp"
 #include "physics/common/solid_assembly.hpp"
@@ -54,15 +56,17 @@ bool element_matrix(Matrix kind, const StructuralSection& section, const MeshPar
   return false;
 }
 
-void require_six(const DofMap& dofs) {
-  // Mixed solid and beam models (DofMap::for_mesh) are refused by the modules before assembly;
-  // when they are wired, this becomes a check that each element's nodes carry six DOFs.
-  if (!dofs.is_uniform() || dofs.dofs_per_node() != 6)
-    throw std::logic_error("structural elements need 6 DOFs per node");
+// Throws std::logic_error unless every node of the element carries six DOFs (a mixed map gives
+// solid nodes three; the modules refuse structural elements on solid nodes before assembly).
+void require_six(const DofMap& dofs, const LocalIndex* nodes, int n_nodes) {
+  for (int a = 0; a < n_nodes; ++a)
+    if (dofs.dofs_of_node(nodes[a]) != 6)
+      throw std::logic_error("structural elements need 6 DOFs at each of their nodes (node " +
+                             std::to_string(dofs.partition().global_nodes()[nodes[a]] + 1) +
+                             " has " + std::to_string(dofs.dofs_of_node(nodes[a])) + ")");
 }
 
 void add_matrix(FeMatrix& A, Matrix kind, const SectionTable& sections, bool lumped) {
-  require_six(A.dofs());
   const MeshPartition& partition = A.dofs().partition();
   alignas(64) double matrix[12 * 12];
   for (std::size_t b = 0; b < partition.blocks().size(); ++b) {
@@ -74,8 +78,10 @@ void add_matrix(FeMatrix& A, Matrix kind, const SectionTable& sections, bool lum
     for (LocalIndex e = 0; e < block.n_elements(); ++e) {
       const LocalIndex* nodes = block.connectivity.data() + block.offsets[e];
       const int n_nodes = static_cast<int>(block.offsets[e + 1] - block.offsets[e]);
-      if (element_matrix(kind, section, partition, nodes, n_nodes, lumped, matrix))
-        A.add_element(first + e, matrix);
+      if (!element_matrix(kind, section, partition, nodes, n_nodes, lumped, matrix))
+        continue;
+      require_six(A.dofs(), nodes, n_nodes);
+      A.add_element(first + e, matrix);
     }
   }
 }
@@ -114,7 +120,6 @@ void assemble_structural_damping(FeMatrix& C, const SectionTable& sections) {
 
 void add_structural_gravity(const SectionTable& sections, const DofMap& dofs,
                             const std::array<double, 3>& gravity, double* overlap_forces) {
-  require_six(dofs);
   const MeshPartition& partition = dofs.partition();
   alignas(64) double matrix[12 * 12];
   for (const auto& block : partition.blocks()) {
@@ -126,6 +131,7 @@ void add_structural_gravity(const SectionTable& sections, const DofMap& dofs,
       const int n_nodes = static_cast<int>(block.offsets[e + 1] - block.offsets[e]);
       if (!element_matrix(Matrix::mass, section, partition, nodes, n_nodes, false, matrix))
         continue;
+      require_six(dofs, nodes, n_nodes);
       const int n = 6 * n_nodes;
       for (int i = 0; i < n; ++i) {
         double sum = 0;
@@ -157,9 +163,11 @@ void assemble_structural_loads(const SolidConditions& conditions, const SectionT
         const LocalIndex local = partition.local_node(node);
         if (local < 0 || local >= partition.n_owned_nodes())
           continue;
+        const bool rotations = dofs.dofs_of_node(local) == 6;  // a moment needs them
         for (int d = 0; d < 3; ++d) {
           f[dofs.local_dof(local, d)] += force.total_force[d] / active;
-          f[dofs.local_dof(local, 3 + d)] += force.total_moment[d] / active;
+          if (rotations)
+            f[dofs.local_dof(local, 3 + d)] += force.total_moment[d] / active;
         }
       }
     }
@@ -187,6 +195,63 @@ void check_structural_conditions(const SolidConditions& conditions, const std::s
     refuse("Centrifugal loads", conditions.centrifugal_loads.front().name);
   if (!conditions.ties.empty())
     refuse("Ties", conditions.ties.front().name);
+}
+
+namespace {
+
+// The first node of \p nodes that carries translations only (a solid node), or -1.
+GlobalIndex first_solid_node(const std::vector<GlobalIndex>& nodes,
+                             const std::vector<int>& node_dofs) {
+  for (GlobalIndex node : nodes)
+    if (node_dofs[node] == 3)
+      return node;
+  return -1;
+}
+
+}  // namespace
+
+void check_mixed_model(const SolidConditions& conditions, const Mesh& mesh, const std::string& deck,
+                       const std::string& path) {
+  const std::vector<int> node_dofs = DofMap::mesh_node_dofs(mesh);
+  const auto solid_node = [&](const std::string& set) {
+    return first_solid_node(mesh.node_set(set, deck, path).nodes, node_dofs);
+  };
+  for (const auto& condition : conditions.displacements) {
+    const bool rotation = std::any_of(condition.components.begin(), condition.components.end(),
+                                      [](int c) { return c >= 3; });
+    const GlobalIndex node = rotation ? solid_node(condition.node_set) : -1;
+    if (node >= 0)
+      throw_input_error(deck, path + "/Displacements/" + condition.name + "/Components",
+                        "prescribes a rotation, and node " + std::to_string(node + 1) +
+                            " of node set '" + condition.node_set +
+                            "' is a solid node with translations only",
+                        "the letters x, y and z on solid nodes (rx, ry, rz on beam, spring and "
+                        "point-mass nodes only)");
+  }
+  for (const auto& force : conditions.nodal_forces) {
+    const auto& m = force.total_moment;
+    const GlobalIndex node = m[0] != 0 || m[1] != 0 || m[2] != 0 ? solid_node(force.node_set) : -1;
+    if (node >= 0)
+      throw_input_error(deck, path + "/Nodal forces/" + force.name + "/Total moment",
+                        "is not zero, and node " + std::to_string(node + 1) + " of node set '" +
+                            force.node_set + "' is a solid node with translations only",
+                        "a Total moment on beam, spring and point-mass nodes only");
+  }
+  for (const auto& block : mesh.blocks) {
+    if (!is_structural_type(block.type))
+      continue;
+    for (GlobalIndex e = 0; e < block.n_elements(); ++e) {
+      const GlobalIndex* nodes = block.element_nodes(e);
+      for (int a = 0; a < block.n_element_nodes(e); ++a)
+        if (node_dofs[nodes[a]] != 6)
+          throw_input_error(deck, "Mesh",
+                            "block '" + block.name + "' element " + std::to_string(e + 1) +
+                                " acts on node " + std::to_string(nodes[a] + 1) +
+                                ", a solid node with translations only",
+                            "structural elements on nodes of their own, tied to the solid by a "
+                            "Solid-beam tie or a rigid link");
+    }
+  }
 }
 
 }  // namespace railfe

@@ -3,7 +3,9 @@
 /// Assembly of the structural elements (beams, spring–dampers, point masses; sections from
 /// structural_sections.hpp) into global matrices and load vectors, for every module that solves
 /// for displacements and rotations (statics, modal, implicit). Nodes of these elements carry six
-/// DOFs u_x, u_y, u_z, θ_x, θ_y, θ_z; DOF indices come only from DofMap::local_dof().
+/// DOFs u_x, u_y, u_z, θ_x, θ_y, θ_z (checked node by node, so that on a mixed map of
+/// DofMap::for_mesh() solids and structural elements share one matrix); DOF indices come only
+/// from DofMap::local_dof().
 ///
 /// The add_* functions add into a matrix that is open for assembly (between
 /// FeMatrix::begin_assembly() and end_assembly()), so that solids and structural elements go
@@ -44,9 +46,10 @@ void assemble_structural_damping(FeMatrix& C, const SectionTable& sections);
 void add_structural_gravity(const SectionTable& sections, const DofMap& dofs,
                             const std::array<double, 3>& gravity, double* overlap_forces);
 
-/// Adds every Nodal force of \p conditions (force and moment, shared equally by the nodes of its
-/// set that carry unknowns) to \p owned_forces (one value per owned DOF of \p dofs), and the
-/// structural weight under Gravity; \p owned_forces is overwritten (collective).
+/// Adds every Nodal force of \p conditions (force, and moment at the nodes with rotations, shared
+/// equally by the nodes of its set that carry unknowns) to \p owned_forces (one value per owned DOF
+/// of \p dofs), and the structural weight under Gravity; \p owned_forces is overwritten
+/// (collective).
 void assemble_structural_loads(const SolidConditions& conditions, const SectionTable& sections,
                                const DofMap& dofs, TpetraVector& owned_forces);
 
@@ -60,5 +63,13 @@ void add_structural_constraints(const SolidConditions& conditions, const DofMap&
 /// stresses are fine): surface and centrifugal loads.
 void check_structural_conditions(const SolidConditions& conditions, const std::string& deck,
                                  const std::string& path);
+
+/// Throws InputError naming \p deck and the parameter under \p path (the step's) when a model of
+/// solids with structural elements (the mixed map of DofMap::for_mesh()) is asked for what its
+/// solid nodes, which carry translations only, cannot give: a Displacement of a rotation or a
+/// Nodal force with a Total moment on a node set holding solid nodes. Throws naming the Mesh when
+/// a spring or point mass acts on a solid node (tie it with a Solid-beam tie instead).
+void check_mixed_model(const SolidConditions& conditions, const Mesh& mesh, const std::string& deck,
+                       const std::string& path);
 
 }  // namespace railfe

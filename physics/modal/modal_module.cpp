@@ -1,5 +1,6 @@
 #include "physics/modal/modal_module.hpp"
 
+#include "physics/common/solid_beam_ties.hpp"
 #include "physics/modal/modal_step.hpp"
 
 namespace railfe {
@@ -134,6 +135,7 @@ ParameterSpec modal_parameters() {
   spec.flag("Chart", true,
             "With classification: draw <step>_modes.png, frequency against nodal diameters per "
             "family (needs python3 with matplotlib).");
+  add_solid_beam_tie_parameters(spec);
   return spec;
 }
 

@@ -19,15 +19,13 @@ namespace railfe {
 
 namespace {
 
-// The owned nodes' translations (node-major, 3 per node) of column \p j, whose nodes carry
-// \p dofs_per_node unknowns (translations first).
-std::vector<double> owned_nodal_values(const MeshPartition& partition,
-                                       const TpetraMultiVector& modes, std::size_t j,
-                                       int dofs_per_node) {
+// The owned nodes' translations (node-major, 3 per node) of column \p j over \p dofs.
+std::vector<double> owned_nodal_values(const DofMap& dofs, const TpetraMultiVector& modes,
+                                       std::size_t j) {
   const auto data = modes.getData(j);
-  std::vector<double> values(3 * static_cast<std::size_t>(partition.n_owned_nodes()));
+  std::vector<double> values(3 * static_cast<std::size_t>(dofs.partition().n_owned_nodes()));
   for (std::size_t i = 0; i < values.size(); ++i)
-    values[i] = data[dofs_per_node * (i / 3) + i % 3];
+    values[i] = data[dofs.local_dof(static_cast<LocalIndex>(i / 3), static_cast<int>(i % 3))];
   return values;
 }
 
@@ -49,8 +47,9 @@ std::string shape_label(const ModeClass& shape) {
 
 }  // namespace
 
-void ModalStep::classify(const MeshPartition& partition, const TpetraMultiVector& modes,
+void ModalStep::classify(const DofMap& dofs, const TpetraMultiVector& modes,
                          std::vector<ModeRecord>& records) const {
+  const MeshPartition& partition = dofs.partition();
   const Mesh& mesh = partition.mesh();
   const Communicator& comm = partition.comm();
   std::vector<GlobalIndex> nodes;  // nodes of the solid (others carry no displacement)
@@ -64,8 +63,7 @@ void ModalStep::classify(const MeshPartition& partition, const TpetraMultiVector
   std::vector<double> packed;  // per mode: family, n, m, shares ×4, phase
   std::vector<std::string> notes;
   for (std::size_t j = 0; j < records.size(); ++j) {
-    const auto field =
-        gather_node_field(partition, owned_nodal_values(partition, modes, j, dofs_per_node_), 3);
+    const auto field = gather_node_field(partition, owned_nodal_values(dofs, modes, j), 3);
     if (!comm.is_root())
       continue;
     std::vector<std::array<double, 3>> displacements(nodes.size());
@@ -99,9 +97,10 @@ void ModalStep::classify(const MeshPartition& partition, const TpetraMultiVector
   }
 }
 
-void ModalStep::write_results(StepContext& context, const MeshPartition& partition,
+void ModalStep::write_results(StepContext& context, const DofMap& dofs,
                               const std::vector<ModeRecord>& records,
                               const TpetraMultiVector* modes) const {
+  const MeshPartition& partition = dofs.partition();
   const bool root = partition.comm().is_root();
   const std::string& name = context.step_name;
   const std::string csv_path = context.output.staging_path(name + "_modes.csv");
@@ -140,8 +139,7 @@ void ModalStep::write_results(StepContext& context, const MeshPartition& partiti
                       context.model.deck().parameters->get<std::string>("Title"),
                       {"displacement_x", "displacement_y", "displacement_z"}, {}, root);
   for (std::size_t j = 0; j < records.size(); ++j) {
-    const auto field =
-        gather_node_field(partition, owned_nodal_values(partition, *modes, j, dofs_per_node_), 3);
+    const auto field = gather_node_field(partition, owned_nodal_values(dofs, *modes, j), 3);
     writer.write_step(static_cast<double>(j + 1), field, {});
   }
   writer.close();

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <optional>
 #include <sstream>
+#include <tuple>
 
 #include "framework/assembly/fe_matrix.hpp"
 #include "framework/assembly/linear_constraints.hpp"
@@ -20,6 +21,7 @@
 #include "framework/output/csv_writer.hpp"
 #include "framework/output/field_gather.hpp"
 #include "physics/common/solid_assembly.hpp"
+#include "physics/common/solid_beam_ties.hpp"
 #include "physics/common/solid_conditions.hpp"
 #include "physics/common/structural_assembly.hpp"
 #include "physics/modal/krylov_plan.hpp"
@@ -206,6 +208,8 @@ std::vector<char> ModalStep::check_blocks_and_supports(const CheckContext& conte
   const std::vector<char> active = used_nodes(block_mesh_ ? *block_mesh_ : mesh);
 
   supports_.clear();
+  const std::vector<int> node_dofs =  // a rotation needs a node that carries one
+      mixed_ ? DofMap::mesh_node_dofs(mesh) : std::vector<int>(mesh.n_nodes(), 6);
   const auto& supports = parameters_->sublist("Supports");
   for (auto it = supports.begin(); it != supports.end(); ++it) {
     const std::string name = supports.name(it);
@@ -216,6 +220,16 @@ std::vector<char> ModalStep::check_blocks_and_supports(const CheckContext& conte
                          sections_ ? parse_components(letters, deck, where + "/Components")
                                    : parse_translations(letters, deck, where + "/Components")};
     const auto& nodes = mesh.node_set(support.node_set, deck, where + "/Node set").nodes;
+    const bool rotation = std::any_of(support.components.begin(), support.components.end(),
+                                      [](int c) { return c >= 3; });
+    for (GlobalIndex node : nodes)
+      if (rotation && node_dofs[node] == 3)
+        throw_input_error(deck, where + "/Components",
+                          "fixes a rotation, and node " + std::to_string(node + 1) +
+                              " of node set '" + support.node_set +
+                              "' is a solid node with translations only",
+                          "the letters x, y and z on solid nodes (rx, ry, rz on beam, spring "
+                          "and point-mass nodes only)");
     if (std::none_of(nodes.begin(), nodes.end(), [&](GlobalIndex n) { return active[n]; })) {
       throw_input_error(
           deck, where + "/Node set",
@@ -229,7 +243,7 @@ std::vector<char> ModalStep::check_blocks_and_supports(const CheckContext& conte
 
 const DofMap& ModalStep::step_dofs(Model& model) {
   if (!block_mesh_)
-    return model.dofs(dofs_per_node_);
+    return mixed_ ? model.mesh_dofs() : model.dofs(dofs_per_node_);
   if (!block_dofs_) {
     block_partition_ =
         std::make_unique<MeshPartition>(*block_mesh_, model.comm(), model.partition_method());
@@ -244,17 +258,17 @@ void ModalStep::check_structural(const CheckContext& context) {
   const std::string step = "the modal step '" + context.step_name + "'";
   sections_.reset();
   dofs_per_node_ = 3;
+  mixed_ = false;
+  std::tie(links_, links_path_) =
+      step_rigid_links(*parameters_, mesh, has_structural_blocks(mesh), deck, context.path);
   if (!has_structural_blocks(mesh)) {
     if (context.model.has_section("Sections"))  // checked, though nothing uses it
       structural_sections(context.model, step);
     return;
   }
-  // TODO(h-dofs): mixed 3/6 DOFs per node with solid-beam ties lift this refusal.
-  if (has_solid_blocks(mesh))
-    throw_input_error(deck, "Mesh",
-                      "has both solid (hex8) and beam, spring or point-mass blocks: " + step +
-                          " needs mixed DOFs per node, which are not available yet",
-                      "a model of solids alone, or of beams, springs and point masses alone");
+  mixed_ = has_solid_blocks(mesh);  // 3 DOFs at solid nodes, 6 at the others
+  if (mixed_)
+    check_mixed_model(SolidConditions{}, mesh, deck, context.path);
   for (const char* name : {"Blocks", "Classification"}) {
     const bool given = std::string(name) == "Blocks"
                            ? !parameters_->get<Teuchos::Array<std::string>>("Blocks").empty()
@@ -266,7 +280,7 @@ void ModalStep::check_structural(const CheckContext& context) {
                         "leave it out");
   }
   sections_ = structural_sections(context.model, step);
-  dofs_per_node_ = 6;
+  dofs_per_node_ = mixed_ ? 0 : 6;
 }
 
 void ModalStep::check(const CheckContext& context) {
@@ -293,21 +307,30 @@ void ModalStep::check(const CheckContext& context) {
   // Fixed DOFs carry no mass and no eigenvalue: every size limit counts the free ones, of the
   // nodes that carry unknowns (those the kept elements use).
   const std::vector<char> active = check_blocks_and_supports(context);
-  const int dpn = dofs_per_node_;
-  std::vector<char> fixed(dpn * static_cast<std::size_t>(mesh.n_nodes()), 0);
+  // DOFs of each node (3 or 6 on a mixed map), fixed ones and those tied to a rigid link's
+  // master, in six slots per node.
+  const std::vector<int> node_dofs =
+      mixed_ ? DofMap::mesh_node_dofs(mesh) : std::vector<int>(mesh.n_nodes(), dofs_per_node_);
+  std::vector<char> fixed(6 * static_cast<std::size_t>(mesh.n_nodes()), 0);
   for (const auto& support : supports_)
     for (GlobalIndex node : mesh.node_set(support.node_set, deck, path).nodes)
       for (int c : support.components)
-        fixed[dpn * static_cast<std::size_t>(node) + c] = active[node];
+        fixed[6 * static_cast<std::size_t>(node) + c] = active[node];
+  for (const auto& link : links_)
+    for (GlobalIndex node : link.slaves)
+      for (int c = 0; c < node_dofs[node]; ++c)
+        fixed[6 * static_cast<std::size_t>(node) + c] = active[node];
   const long long n_fixed = std::count(fixed.begin(), fixed.end(), 1);
-  const long long n_dofs =
-      dpn * static_cast<long long>(std::count(active.begin(), active.end(), 1));
-  // A free DOF without mass (a node on springs alone) gives no finite eigenvalue either.
+  long long n_dofs = 0;
+  for (GlobalIndex node = 0; node < mesh.n_nodes(); ++node)
+    n_dofs += active[node] ? node_dofs[node] : 0;
+  // A free DOF without mass (a node on springs alone) gives no finite eigenvalue either; solid
+  // nodes (3 DOFs) have the hex8 mass.
   massless_dofs_ = 0;
   if (sections_) {
     const std::vector<char> massless = massless_components(mesh, *sections_);
     for (std::size_t i = 0; i < fixed.size(); ++i)
-      massless_dofs_ += active[i / 6] && !fixed[i] && massless[i];
+      massless_dofs_ += active[i / 6] && node_dofs[i / 6] == 6 && !fixed[i] && massless[i];
   }
   free_dofs_ = n_dofs - n_fixed - massless_dofs_;
   if (free_dofs_ == 0) {
@@ -375,7 +398,16 @@ void ModalStep::run(StepContext& context) {
   FeMatrix stiffness(dofs);
   FeMatrix mass(dofs);
   const bool lumped = p.get<std::string>("Mass") == "lumped";
-  if (sections_) {
+  if (mixed_) {  // solids and structural elements in one matrix each
+    stiffness.begin_assembly();
+    add_elastic_stiffness(stiffness, *materials_);
+    add_structural_stiffness(stiffness, *sections_);
+    stiffness.end_assembly();
+    mass.begin_assembly();
+    add_mass(mass, *materials_, lumped);
+    add_structural_mass(mass, *sections_, lumped);
+    mass.end_assembly();
+  } else if (sections_) {
     assemble_structural_stiffness(stiffness, *sections_);
     assemble_structural_mass(mass, *sections_, lumped);
   } else {
@@ -392,11 +424,12 @@ void ModalStep::run(StepContext& context) {
         constraints.prescribe(dofs.owned_map()->getGlobalElement(dofs.local_dof(local, c)), 0.0);
     }
   }
+  add_rigid_links(links_, dofs, constraints, context.source(), links_path_);
   constraints.finalize();
   TpetraVector no_load(dofs.owned_map());
   const Teuchos::RCP<const TpetraMatrix> K = constraints.apply(stiffness.matrix(), no_load);
-  constraints.remove_prescribed(*mass.matrix());
-  const Teuchos::RCP<const TpetraMatrix> M = mass.matrix();
+  // Tᵀ M T: a tied or linked node's inertia moves to its master.
+  const Teuchos::RCP<const TpetraMatrix> M = constraints.constrained_mass(mass.matrix());
   const double assembly_seconds = clock.seconds();
 
   const auto inner = inner_solver(p.get<std::string>("Inner solver"));
@@ -421,7 +454,8 @@ void ModalStep::run(StepContext& context) {
   const ShiftInvertEigensolver& eigensolver = *solver;
   factor_progress.finish();
 
-  const long long free_dofs = dofs.n_global_dofs() - constraints.n_prescribed() - massless_dofs_;
+  const long long free_dofs = dofs.n_global_dofs() - constraints.n_prescribed() -
+                              constraints.n_multipoint() - massless_dofs_;
   ShiftInvertSettings settings;
   settings.n_modes = first_batch(free_dofs);
   settings.block_size = p.get<int>("Block size");
@@ -511,7 +545,7 @@ void ModalStep::run(StepContext& context) {
   const auto checks = check_modes(
       *K, *M, result.eigenvalues,
       result.vectors.is_null() ? TpetraMultiVector(K->getDomainMap(), 1) : *result.vectors,
-      dofs_per_node_, p.get<double>("Doublet tolerance"));
+      rigid_translations(dofs), p.get<double>("Doublet tolerance"));
   std::vector<int> kept;
   for (std::size_t i = 0; i < result.eigenvalues.size(); ++i) {
     const double f = frequency_of(result.eigenvalues[i]);
@@ -540,8 +574,12 @@ void ModalStep::run(StepContext& context) {
     modes = result.vectors->subCopy(
         Teuchos::ArrayView<const std::size_t>(columns.data(), columns.size()));
   }
+  // The slaves of ties and rigid links follow their masters in the modes written out.
+  for (std::size_t j = 0;
+       !modes.is_null() && constraints.n_multipoint() > 0 && j < modes->getNumVectors(); ++j)
+    constraints.recover(*modes->getVectorNonConst(j));
   if (classify_ && !modes.is_null())
-    classify(partition, *modes, records);
+    classify(dofs, *modes, records);
   for (auto& record : records) {
     if (record.rigid) {
       record.shape = ModeClass();
@@ -603,7 +641,7 @@ void ModalStep::run(StepContext& context) {
   summary.add(section, "time: eigensolver iterations", result.iteration_seconds, "s");
 
   clock.restart();
-  write_results(context, partition, records, modes.get());
+  write_results(context, dofs, records, modes.get());
   if (!references_.empty())
     write_validation(context, records);
   if (p.get<bool>("Export matrices"))

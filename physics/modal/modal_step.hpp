@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "framework/app/module.hpp"
+#include "physics/common/rigid_links.hpp"
 #include "physics/common/structural_sections.hpp"
 #include "physics/materials/elastic_material.hpp"
 #include "physics/modal/mode_checks.hpp"
@@ -59,9 +60,9 @@ class ModalStep : public AnalysisStep {
   std::vector<char> check_blocks_and_supports(const CheckContext& context);
   // Modes of the first eigensolver batch: Modes, or its automatic value.
   int first_batch(long long free_dofs) const;
-  void classify(const MeshPartition& partition, const TpetraMultiVector& modes,
+  void classify(const DofMap& dofs, const TpetraMultiVector& modes,
                 std::vector<ModeRecord>& records) const;
-  void write_results(StepContext& context, const MeshPartition& partition,
+  void write_results(StepContext& context, const DofMap& dofs,
                      const std::vector<ModeRecord>& records, const TpetraMultiVector* modes) const;
   void write_validation(StepContext& context, const std::vector<ModeRecord>& records) const;
   static void export_matrices(StepContext& context, const TpetraMatrix& K, const TpetraMatrix& M);
@@ -70,7 +71,10 @@ class ModalStep : public AnalysisStep {
   const Teuchos::ParameterList* parameters_;
   std::optional<MaterialTable> materials_;
   std::optional<SectionTable> sections_;  // a model of beams, springs and point masses
-  int dofs_per_node_ = 3;                 // 6 for a structural model
+  int dofs_per_node_ = 3;                 // 6 for a structural model, 0 for a mixed one
+  bool mixed_ = false;  // solids and structural elements: 3 or 6 DOFs per node (mesh_dofs())
+  std::vector<RigidLink> links_;  // the mesh's rigid_link blocks and the Solid-beam ties
+  std::string links_path_;        // where their errors point
   std::vector<ModalSupport> supports_;
   std::vector<std::string> block_names_;            // Blocks (empty = the whole mesh)
   std::unique_ptr<Mesh> block_mesh_;                // the mesh of Blocks, if given

@@ -33,7 +33,8 @@ double infinity_norm(const TpetraMatrix& A) {
 
 std::vector<ModeCheck> check_modes(const TpetraMatrix& K, const TpetraMatrix& M,
                                    const std::vector<double>& eigenvalues,
-                                   const TpetraMultiVector& modes, int dofs_per_node,
+                                   const TpetraMultiVector& modes,
+                                   const TpetraMultiVector& translations,
                                    double doublet_tolerance) {
   const int n = static_cast<int>(eigenvalues.size());
   std::vector<ModeCheck> checks(n);
@@ -52,13 +53,6 @@ std::vector<ModeCheck> check_modes(const TpetraMatrix& K, const TpetraMatrix& M,
       Teuchos::rcp(new TpetraMap(n, 0, K.getComm(), Tpetra::LocallyReplicated)), n);
   gram_vectors.multiply(Teuchos::TRANS, Teuchos::NO_TRANS, 1.0, modes, mass_times, 0.0);
 
-  // Rigid translations r_d.
-  TpetraMultiVector translations(M.getDomainMap(), 3);
-  for (int d = 0; d < 3; ++d) {
-    auto column = translations.getDataNonConst(d);
-    for (decltype(column.size()) i = 0; i < column.size(); ++i)
-      column[i] = static_cast<int>(i % dofs_per_node) == d ? 1.0 : 0.0;
-  }
   TpetraMultiVector participation(
       Teuchos::rcp(new TpetraMap(n, 0, K.getComm(), Tpetra::LocallyReplicated)), 3);
   participation.multiply(Teuchos::TRANS, Teuchos::NO_TRANS, 1.0, mass_times, translations, 0.0);
@@ -95,6 +89,16 @@ std::vector<ModeCheck> check_modes(const TpetraMatrix& K, const TpetraMatrix& M,
     }
   }
   return checks;
+}
+
+TpetraMultiVector rigid_translations(const DofMap& dofs) {
+  TpetraMultiVector translations(dofs.owned_map(), 3);
+  for (int d = 0; d < 3; ++d) {
+    auto column = translations.getDataNonConst(d);
+    for (LocalIndex node = 0; node < dofs.partition().n_owned_nodes(); ++node)
+      column[dofs.local_dof(node, d)] = 1.0;
+  }
+  return translations;
 }
 
 }  // namespace railfe

@@ -6,6 +6,7 @@
 #include <array>
 #include <vector>
 
+#include "framework/assembly/dof_map.hpp"
 #include "framework/assembly/tpetra_types.hpp"
 
 namespace railfe {
@@ -28,12 +29,17 @@ struct ModeCheck {
   int partner = -1;
 };
 
-/// Checks every column of \p modes (collective). \p dofs_per_node gives the component of each DOF
-/// (node-major DOFs). Two modes are a doublet when their eigenvalues differ by less than
-/// \p doublet_tolerance relative to the larger (frequencies by half that).
+/// Checks every column of \p modes (collective). \p translations holds the unit rigid
+/// translations r_x, r_y, r_z over the DOFs (rigid_translations()). Two modes are a doublet when
+/// their eigenvalues differ by less than \p doublet_tolerance relative to the larger (frequencies
+/// by half that).
 std::vector<ModeCheck> check_modes(const TpetraMatrix& K, const TpetraMatrix& M,
                                    const std::vector<double>& eigenvalues,
-                                   const TpetraMultiVector& modes, int dofs_per_node,
-                                   double doublet_tolerance);
+                                   const TpetraMultiVector& modes,
+                                   const TpetraMultiVector& translations, double doublet_tolerance);
+
+/// The unit rigid translations r_x, r_y, r_z (three columns) over the owned DOFs of \p dofs:
+/// 1 at each node's component d, 0 at the other components and the rotations.
+TpetraMultiVector rigid_translations(const DofMap& dofs);
 
 }  // namespace railfe

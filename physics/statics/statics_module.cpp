@@ -2,6 +2,7 @@
 
 #include "framework/solvers/linear_solver.hpp"
 #include "physics/common/contact_settings.hpp"
+#include "physics/common/solid_beam_ties.hpp"
 #include "physics/common/solid_conditions.hpp"
 #include "physics/statics/ground_springs.hpp"
 #include "physics/statics/statics_step.hpp"
@@ -13,6 +14,7 @@ namespace {
 ParameterSpec statics_parameters() {
   ParameterSpec spec("Linear elastostatics of hex8 solids, with penalty contact between them.");
   add_solid_condition_parameters(spec);
+  add_solid_beam_tie_parameters(spec);
   spec.sublist("Linear solver", linear_solver_parameters(), "How K u = f is solved.");
   ParameterSpec solid("Hex8 formulation of every solid block in this step.");
   solid.choice("Integration", "full",

@@ -2,9 +2,11 @@
 
 #include <Tpetra_Vector.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 
 #include "framework/assembly/fe_matrix.hpp"
 #include "framework/assembly/linear_constraints.hpp"
@@ -17,6 +19,7 @@
 #include "physics/common/contact_tables.hpp"
 #include "physics/common/node_set_stresses.hpp"
 #include "physics/common/solid_assembly.hpp"
+#include "physics/common/solid_beam_ties.hpp"
 #include "physics/common/structural_assembly.hpp"
 #include "physics/statics/contact_newton.hpp"
 
@@ -49,21 +52,22 @@ void StaticsStep::check(const CheckContext& context) {
   materials_ = solid_materials(context.model, step, EnhancedStrainSupport::supported);
   sections_.reset();
   dofs_per_node_ = 3;
+  mixed_ = has_solid_blocks(mesh) && has_structural_blocks(mesh);
   if (has_structural_blocks(mesh)) {
-    // TODO(h-dofs): mixed 3/6 DOFs per node with solid-beam ties lift this refusal.
-    if (has_solid_blocks(mesh))
-      throw_input_error(deck, "Mesh",
-                        "has both solid (hex8) and beam, spring or point-mass blocks: " + step +
-                            " needs mixed DOFs per node, which are not available yet",
-                        "a model of solids alone, or of beams, springs and point masses alone");
     sections_ = structural_sections(context.model, step);
-    dofs_per_node_ = 6;
-    check_structural_conditions(conditions_, deck, context.path);
+    if (mixed_)
+      check_mixed_model(conditions_, mesh, deck, context.path);
+    else
+      check_structural_conditions(conditions_, deck, context.path);
+    dofs_per_node_ = mixed_ ? 0 : 6;
   } else {
     refuse_rotations(conditions_, deck, context.path, "a model of solids");
     if (context.model.has_section("Sections"))  // checked, though nothing uses it
       structural_sections(context.model, step);
   }
+  // Refused here, before any output.
+  std::tie(links_, links_path_) =
+      step_rigid_links(*parameters_, mesh, sections_.has_value(), deck, context.path);
   for (const auto& force : conditions_.nodal_forces) {
     bool attached = false;
     for (GlobalIndex node : mesh.node_set(force.node_set, deck, "").nodes) {
@@ -90,15 +94,17 @@ void StaticsStep::check(const CheckContext& context) {
                           "'full' with enhanced-strain materials, or Element 'full integration'");
   springs_ = read_ground_springs(*parameters_, mesh, deck, context.path);
   contact_pairs_ = read_contact_pairs(*parameters_, deck, context.path, ContactUse::statics);
-  if (sections_ && !springs_.empty())
+  if (sections_ && !mixed_ && !springs_.empty())
     throw_input_error(deck, context.path + "/Ground springs/" + springs_.front().name,
                       "acts on solid nodes, and the model has beams, springs and point masses",
                       "a spring-damper section on a one-node block (Sections) for springs to "
                       "the ground");
   if (sections_ && !contact_pairs_.empty())
     throw_input_error(deck, context.path + "/Contact pairs",
-                      "needs solid (hex8) surfaces, and the model has none",
-                      "no contact pairs on a model of beams, springs and point masses");
+                      mixed_ ? "are not available yet on a model of solids with beams, springs "
+                               "or point masses (mixed DOFs per node)"
+                             : "needs solid (hex8) surfaces, and the model has none",
+                      "no contact pairs on a model with beams, springs and point masses");
   check_contact_pairs(contact_pairs_, mesh, deck, context.path);
   if (contact_pairs_.empty()) {
     for (const char* name : {"Contact iterations", "Contact tolerance"})
@@ -115,7 +121,7 @@ void StaticsStep::check(const CheckContext& context) {
 
 void StaticsStep::run(StepContext& context) {
   Model& model = context.model;
-  const DofMap& dofs = model.dofs(dofs_per_node_);
+  const DofMap& dofs = mixed_ ? model.mesh_dofs() : model.dofs(dofs_per_node_);
   const Communicator& comm = model.comm();
   const std::string section = "Step " + context.step_name + " (statics)";
   RunSummary& summary = context.summary;
@@ -133,10 +139,16 @@ void StaticsStep::run(StepContext& context) {
   start_phase();
   Progress assembly_progress =
       context.progress("stiffness assembly", dofs.partition().n_local_elements());
-  if (sections_)
+  if (mixed_) {  // solids and structural elements in one matrix
+    stiffness.begin_assembly();
+    add_elastic_stiffness(stiffness, *materials_, &assembly_progress, one_point_kappa_);
+    add_structural_stiffness(stiffness, *sections_);
+    stiffness.end_assembly();
+  } else if (sections_) {
     assemble_structural_stiffness(stiffness, *sections_);
-  else
+  } else {
     assemble_elastic_stiffness(stiffness, *materials_, &assembly_progress, one_point_kappa_);
+  }
   if (!springs_.empty())
     stiffness.add_to_diagonal(ground_spring_diagonal(springs_, dofs));
   assembly_progress.finish();
@@ -144,10 +156,19 @@ void StaticsStep::run(StepContext& context) {
 
   start_phase();
   auto forces = Teuchos::rcp(new TpetraVector(dofs.owned_map()));
-  if (sections_)
+  if (mixed_) {
+    // The solids' loads, then the structural weight and every nodal force (with its moment).
+    SolidConditions solid_loads = conditions_;
+    solid_loads.nodal_forces.clear();
+    assemble_solid_loads(solid_loads, *materials_, dofs, *forces);
+    TpetraVector structural(dofs.owned_map());
+    assemble_structural_loads(conditions_, *sections_, dofs, structural);
+    forces->update(1.0, structural, 1.0);
+  } else if (sections_) {
     assemble_structural_loads(conditions_, *sections_, dofs, *forces);
-  else
+  } else {
     assemble_solid_loads(conditions_, *materials_, dofs, *forces);
+  }
   const auto applied = component_sums(*forces, dofs);
   // An overflowing load (an extreme Density times Gravity, or a huge Total force) would end in a
   // solver message about restraints; say what it is instead.
@@ -158,7 +179,8 @@ void StaticsStep::run(StepContext& context) {
                    "Traction and Pressure for extreme values");
   TpetraVector original_forces(*forces, Teuchos::Copy);
   LinearConstraints constraints(dofs, context.source());
-  if (sections_)
+  add_rigid_links(links_, dofs, constraints, context.source(), links_path_);
+  if (sections_ && !mixed_)
     add_structural_constraints(conditions_, dofs, constraints);
   else
     add_solid_constraints(conditions_, tie_pairs_, dofs, constraints);
@@ -265,21 +287,37 @@ void StaticsStep::run(StepContext& context) {
 
 namespace {
 
-// Sum over the owned nodes of \p nodes of components 0..n-1 of \p data, over all ranks.
+// Sum over the owned nodes of \p nodes of components 0..n-1 of \p data (those a node carries),
+// over all ranks; with \p count, component n of the result counts the nodes with n components.
 std::vector<double> node_set_sum(const DofMap& dofs, const std::vector<GlobalIndex>& nodes,
-                                 const Teuchos::ArrayRCP<const double>& data, int n) {
+                                 const Teuchos::ArrayRCP<const double>& data, int n,
+                                 bool count = false) {
   const MeshPartition& partition = dofs.partition();
-  std::vector<double> sum(n, 0.0);
+  std::vector<double> sum(n + (count ? 1 : 0), 0.0);
   for (GlobalIndex node : nodes) {
     const LocalIndex local = partition.local_node(node);
     if (local < 0 || local >= partition.n_owned_nodes())
       continue;
-    for (int d = 0; d < n; ++d)
+    const int carried = std::min(n, dofs.dofs_of_node(local));
+    for (int d = 0; d < carried; ++d)
       sum[d] += data[dofs.local_dof(local, d)];
+    if (count && carried == n)
+      sum[n] += 1;
   }
   for (double& value : sum)
     value = partition.comm().sum(value);
   return sum;
+}
+
+// The translations (3 per local node) of overlapping vector \p u_overlap over \p dofs: what the
+// solid stress recovery reads, whatever the layout.
+std::vector<double> node_translations(const DofMap& dofs, const double* u_overlap) {
+  const LocalIndex n = dofs.partition().n_local_nodes();
+  std::vector<double> translations(3 * static_cast<std::size_t>(n));
+  for (LocalIndex node = 0; node < n; ++node)
+    for (int d = 0; d < 3; ++d)
+      translations[3 * node + d] = u_overlap[dofs.local_dof(node, d)];
+  return translations;
 }
 
 }  // namespace
@@ -292,12 +330,13 @@ void StaticsStep::write_probes(StepContext& context, const DofMap& dofs, const T
   std::vector<std::vector<GlobalIndex>> probe_sets;
   for (const auto& probe : conditions_.probes)
     probe_sets.push_back(mesh.node_set(probe.node_set, "", "").nodes);
-  // Beams report their rotations; solids the stresses extrapolated to the nodes.
+  // Beams report their rotations (the mean over the set's nodes that carry them); solids the
+  // stresses extrapolated to the nodes; a mixed model both.
   std::vector<double> probe_stresses;
   std::vector<std::string> columns{"probe", "nodes", "ux_m", "uy_m", "uz_m"};
-  if (sections_) {
+  if (sections_)
     columns.insert(columns.end(), {"rx_rad", "ry_rad", "rz_rad"});
-  } else {
+  if (!sections_ || mixed_) {
     probe_stresses =
         node_set_stresses(partition, *materials_, u_overlap, probe_sets, one_point_kappa_ >= 0);
     columns.insert(columns.end(), {"sxx_Pa", "syy_Pa", "szz_Pa", "sxy_Pa", "syz_Pa", "szx_Pa"});
@@ -311,11 +350,14 @@ void StaticsStep::write_probes(StepContext& context, const DofMap& dofs, const T
       count += local >= 0 && local < partition.n_owned_nodes();
     }
     const double total = static_cast<double>(comm.sum(count));
-    const auto sum = node_set_sum(dofs, probe_sets[p], u.getData(), sections_ ? 6 : 3);
+    const int n = sections_ ? 6 : 3;
+    const auto sum = node_set_sum(dofs, probe_sets[p], u.getData(), n, true);
     std::vector<std::string> row{conditions_.probes[p].name,
                                  std::to_string(static_cast<long long>(total))};
-    for (double value : sum)
-      row.push_back(CsvWriter::format(value / total));
+    for (int c = 0; c < n; ++c) {
+      const double nodes = c < 3 ? total : sum[n];  // rotations: the nodes that carry them
+      row.push_back(CsvWriter::format(nodes > 0 ? sum[c] / nodes : 0.0));
+    }
     for (std::size_t c = 0; !probe_stresses.empty() && c < 6; ++c)
       row.push_back(CsvWriter::format(probe_stresses[6 * p + c]));
     probes.write_row(row);
@@ -337,6 +379,11 @@ void StaticsStep::write_results(StepContext& context, const DofMap& dofs, const 
   TpetraVector u_overlap(dofs.overlap_map());
   dofs.owned_to_overlap(u, u_overlap);
   const double* u_local = u_overlap.getData().getRawPtr();
+  std::vector<double> translations;  // 3 per node, for the solids' stresses on a mixed map
+  if (mixed_) {
+    translations = node_translations(dofs, u_local);
+    u_local = translations.data();
+  }
   write_probes(context, dofs, u, u_local);
 
   std::vector<std::string> reaction_columns{"condition", "node_set", "Fx_N", "Fy_N", "Fz_N"};
@@ -379,7 +426,7 @@ void StaticsStep::write_results(StepContext& context, const DofMap& dofs, const 
     for (int d = 0; d < 3; ++d) {
       owned[width * node + d] = u_data[dofs.local_dof(node, d)];
       owned[width * node + 3 + d] = r_data[dofs.local_dof(node, d)];
-      if (sections_) {
+      if (sections_ && dofs.dofs_of_node(node) == 6) {  // rotations where they exist
         owned[width * node + 6 + d] = u_data[dofs.local_dof(node, 3 + d)];
         owned[width * node + 9 + d] = r_data[dofs.local_dof(node, 3 + d)];
       }

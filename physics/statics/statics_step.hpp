@@ -8,6 +8,7 @@
 
 #include "framework/app/module.hpp"
 #include "physics/common/contact_settings.hpp"
+#include "physics/common/rigid_links.hpp"
 #include "physics/common/solid_conditions.hpp"
 #include "physics/common/structural_sections.hpp"
 #include "physics/materials/elastic_material.hpp"
@@ -40,6 +41,9 @@ class StaticsStep : public AnalysisStep {
   std::optional<MaterialTable> materials_;
   std::optional<SectionTable> sections_;  // a model of beams, springs and point masses
   int dofs_per_node_ = 3;                 // 6 for a structural model
+  bool mixed_ = false;  // solids and structural elements: 3 or 6 DOFs per node (mesh_dofs())
+  std::vector<RigidLink> links_;  // the mesh's rigid_link blocks and the Solid-beam ties
+  std::string links_path_;        // where their errors point
   std::vector<std::vector<std::pair<GlobalIndex, GlobalIndex>>> tie_pairs_;
   std::vector<ContactPairSpec> contact_pairs_;
   std::vector<GroundSpring> springs_;

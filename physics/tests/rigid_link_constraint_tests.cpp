@@ -17,6 +17,7 @@
 #include "physics/common/rigid_links.hpp"
 #include "physics/common/solid_assembly.hpp"
 #include "physics/common/solid_beam_ties.hpp"
+#include "physics/common/structural_assembly.hpp"
 #include "physics/elements/element_frame.hpp"
 #include "physics/elements/hex8.hpp"
 #include "physics/elements/hex8_enhanced_strain.hpp"
@@ -307,6 +308,40 @@ TEST(SolidBeamTie, BeamSetOfTwoNodesIsRefused) {
               std::string::npos)
         << error.what();
   }
+}
+
+// The message check_mixed_model() gives \p conditions on \p mesh, or "" when it accepts them.
+std::string mixed_model_message(const SolidConditions& conditions, const Mesh& mesh) {
+  try {
+    check_mixed_model(conditions, mesh, "deck.xml", "Steps/load");
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(SolidBeamTie, MixedModelRefusesRotationsAndStructuralElementsOnSolidNodes) {
+  Mesh mesh = generate_box(BoxSpec{});
+  const GlobalIndex beam = add_node(mesh, {2, 0.5, 0.5});
+  add_block(mesh, "beam end", ElementType::point_mass, {beam});
+  SolidConditions conditions;
+  conditions.displacements.push_back({"clamp", "xmin", {0, 1, 2}, 0.0, ""});
+  EXPECT_EQ(mixed_model_message(conditions, mesh), "");
+  conditions.displacements.back().components.push_back(4);  // ry on solid nodes
+  const std::string rotation = mixed_model_message(conditions, mesh);
+  EXPECT_NE(rotation.find("Steps/load/Displacements/clamp/Components"), std::string::npos)
+      << rotation;
+  EXPECT_NE(rotation.find("node 1 of node set 'xmin' is a solid node"), std::string::npos)
+      << rotation;
+  conditions.displacements.clear();
+  conditions.nodal_forces.push_back({"twist", "xmax", {0, 0, 0}, {1, 0, 0}});
+  EXPECT_NE(mixed_model_message(conditions, mesh).find("Nodal forces/twist/Total moment"),
+            std::string::npos);
+  conditions.nodal_forces.clear();
+  add_block(mesh, "mass on the solid", ElementType::point_mass, {3});
+  const std::string on_solid = mixed_model_message(conditions, mesh);
+  EXPECT_NE(on_solid.find("block 'mass on the solid' element 1 acts on node 4"), std::string::npos)
+      << on_solid;
 }
 
 }  // namespace
