@@ -163,7 +163,8 @@ void ImplicitStep::check(const CheckContext& context) {
     if (has_solid_blocks(mesh))
       throw_input_error(deck, "Mesh",
                         "has both solid (hex8) and beam, spring or point-mass blocks: " + step +
-                            " needs mixed DOFs per node, which are not available yet",
+                            " needs mixed DOFs per node, which the implicit module does not take "
+                            "yet (statics and modal do)",
                         "a model of solids alone, or of beams, springs and point masses alone");
     sections_ = structural_sections(context.model, step);
     dofs_per_node_ = 6;
