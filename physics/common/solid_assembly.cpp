@@ -234,8 +234,12 @@ void assemble_solid_loads(const SolidConditions& conditions, const MaterialTable
     }
   }
   dofs.overlap_to_owned_sum(overlap, forces);
+  add_nodal_forces(conditions, dofs, forces.getDataNonConst().getRawPtr());
+}
 
-  auto f = forces.getDataNonConst();
+void add_nodal_forces(const SolidConditions& conditions, const DofMap& dofs, double* owned_forces) {
+  const MeshPartition& partition = dofs.partition();
+  const Mesh& mesh = partition.mesh();
   for (const auto& force : conditions.nodal_forces) {
     const NodeSet& set = mesh.node_set(force.node_set, "", "");
     long long active = 0;
@@ -245,8 +249,12 @@ void assemble_solid_loads(const SolidConditions& conditions, const MaterialTable
       const LocalIndex local = partition.local_node(node);
       if (local < 0 || local >= partition.n_owned_nodes())
         continue;
-      for (int d = 0; d < 3; ++d)
-        f[dofs.local_dof(local, d)] += force.total_force[d] / active;
+      const bool rotations = dofs.dofs_of_node(local) == 6;  // a moment needs them
+      for (int d = 0; d < 3; ++d) {
+        owned_forces[dofs.local_dof(local, d)] += force.total_force[d] / active;
+        if (rotations)
+          owned_forces[dofs.local_dof(local, 3 + d)] += force.total_moment[d] / active;
+      }
     }
   }
 }
@@ -294,7 +302,6 @@ void prescribe_displacements(const SolidConditions& conditions, const DofMap& do
                              LinearConstraints& constraints) {
   const MeshPartition& partition = dofs.partition();
   const Mesh& mesh = partition.mesh();
-  const TpetraMap& owned = *dofs.owned_map();
   for (const auto& condition : conditions.displacements) {
     std::optional<Expression> expression;
     if (!condition.expression.empty())

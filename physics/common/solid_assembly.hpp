@@ -47,6 +47,11 @@ void add_mass(FeMatrix& M, const MaterialTable& materials, bool lumped);
 void assemble_solid_loads(const SolidConditions& conditions, const MaterialTable& materials,
                           const DofMap& dofs, TpetraVector& forces);
 
+/// Adds every Nodal force of \p conditions to \p owned_forces (one value per owned DOF of
+/// \p dofs), shared equally by the nodes of its set that carry unknowns; its Total moment goes
+/// to the rotations of the nodes that have them (6-DOF nodes).
+void add_nodal_forces(const SolidConditions& conditions, const DofMap& dofs, double* owned_forces);
+
 /// Node pairs (slave, master) of a tie, found by position. Throws InputError naming \p deck and
 /// \p path if a slave node has no master within the tolerance.
 std::vector<std::pair<GlobalIndex, GlobalIndex>> pair_tied_nodes(const Tie& tie, const Mesh& mesh,

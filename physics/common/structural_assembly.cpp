@@ -146,33 +146,15 @@ void add_structural_gravity(const SectionTable& sections, const DofMap& dofs,
 
 void assemble_structural_loads(const SolidConditions& conditions, const SectionTable& sections,
                                const DofMap& dofs, TpetraVector& owned_forces) {
-  const MeshPartition& partition = dofs.partition();
-  const Mesh& mesh = partition.mesh();
   TpetraVector overlap(dofs.overlap_map());
   {
     auto f = overlap.getDataNonConst();
     const auto& g = conditions.gravity;
     if (g[0] != 0 || g[1] != 0 || g[2] != 0)
       add_structural_gravity(sections, dofs, g, f.getRawPtr());
-    for (const auto& force : conditions.nodal_forces) {
-      const NodeSet& set = mesh.node_set(force.node_set, "", "");
-      long long active = 0;
-      for (GlobalIndex node : set.nodes)
-        active += partition.node_ranks()[node] >= 0;
-      for (GlobalIndex node : set.nodes) {
-        const LocalIndex local = partition.local_node(node);
-        if (local < 0 || local >= partition.n_owned_nodes())
-          continue;
-        const bool rotations = dofs.dofs_of_node(local) == 6;  // a moment needs them
-        for (int d = 0; d < 3; ++d) {
-          f[dofs.local_dof(local, d)] += force.total_force[d] / active;
-          if (rotations)
-            f[dofs.local_dof(local, 3 + d)] += force.total_moment[d] / active;
-        }
-      }
-    }
   }
   dofs.overlap_to_owned_sum(overlap, owned_forces);
+  add_nodal_forces(conditions, dofs, owned_forces.getDataNonConst().getRawPtr());
 }
 
 void add_structural_constraints(const SolidConditions& conditions, const DofMap& dofs,
