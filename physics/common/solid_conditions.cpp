@@ -220,4 +220,15 @@ void check_solid_conditions(const SolidConditions& conditions, const Mesh& mesh,
   }
 }
 
+bool is_earlier_statics_step(const Teuchos::ParameterList& steps, const std::string& name,
+                             const std::string& step) {
+  for (auto it = steps.begin(); it != steps.end(); ++it) {
+    if (steps.name(it) == step)
+      return false;
+    if (steps.name(it) == name)
+      return steps.sublist(name).get<std::string>("Module") == "statics";
+  }
+  return false;
+}
+
 }  // namespace railfe

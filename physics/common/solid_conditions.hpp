@@ -108,4 +108,9 @@ void refuse_rotations(const SolidConditions& conditions, const std::string& deck
 void check_solid_conditions(const SolidConditions& conditions, const Mesh& mesh,
                             const std::string& deck, const std::string& path);
 
+/// Whether \p name is a statics step listed before \p step under the deck's \p steps (what
+/// a dynamic step's Start from may name).
+bool is_earlier_statics_step(const Teuchos::ParameterList& steps, const std::string& name,
+                             const std::string& step);
+
 }  // namespace railfe

@@ -12,6 +12,7 @@
 #include "framework/base/resources.hpp"
 #include "physics/common/chart_script.hpp"
 #include "physics/common/contact_pairs.hpp"
+#include "physics/common/solid_conditions.hpp"
 #include "physics/explicit/checkpoint.hpp"
 #include "physics/explicit/contact_output.hpp"
 #include "physics/explicit/explicit_output.hpp"
@@ -168,17 +169,8 @@ void ExplicitStep::check(const CheckContext& context) {
                  context.path.c_str(), steps_needed, static_cast<double>(mesh.n_elements()),
                  estimated_hours_);
   if (!settings_->start_from.empty()) {
-    const auto& steps = context.model.deck().parameters->sublist("Steps");
-    bool found = false;
-    for (auto it = steps.begin(); it != steps.end(); ++it) {
-      const std::string name = steps.name(it);
-      if (name == context.step_name)
-        break;
-      if (name == settings_->start_from) {
-        found = steps.sublist(name).get<std::string>("Module") == "statics";
-      }
-    }
-    if (!found)
+    if (!is_earlier_statics_step(context.model.deck().parameters->sublist("Steps"),
+                                 settings_->start_from, context.step_name))
       throw_input_error(deck, context.path + "/Start from",
                         "names '" + settings_->start_from + "', which is no earlier statics step",
                         "the name of a statics step listed before this one");

@@ -92,7 +92,6 @@ ConstrainedStepper::ConstrainedStepper(const ConstrainedSetup& setup)
   const DofMap& dofs = *setup.dofs;
   const MeshPartition& partition = dofs.partition();
   const Mesh& mesh = partition.mesh();
-  const Communicator& comm = partition.comm();
   const int per_node = dofs.dofs_per_node();
   Root& root = *root_;
 

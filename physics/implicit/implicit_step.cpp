@@ -46,18 +46,6 @@ void refuse_unsupported(const SolidConditions& conditions, const std::string& de
                       "an Output/Histories entry with the same Node set");
 }
 
-// Whether \p name is a statics step listed before \p step in the deck.
-bool is_earlier_statics_step(const Teuchos::ParameterList& steps, const std::string& name,
-                             const std::string& step) {
-  for (auto it = steps.begin(); it != steps.end(); ++it) {
-    if (steps.name(it) == step)
-      return false;
-    if (steps.name(it) == name)
-      return steps.sublist(name).get<std::string>("Module") == "statics";
-  }
-  return false;
-}
-
 // Owned local DOFs held at zero by the Displacements.
 std::vector<LocalIndex> fixed_dofs(const SolidConditions& conditions, const DofMap& dofs) {
   const MeshPartition& partition = dofs.partition();

@@ -43,10 +43,10 @@ void ImplicitSystem::apply(const TpetraMatrix& matrix, const double* x, double* 
 void ImplicitSystem::internal_force(const double* u, const double* v, double* force) {
   apply(*matrices_.stiffness, u, force);
   if (!matrices_.damping.is_null()) {
-    std::vector<double> damping(n_);
-    apply(*matrices_.damping, v, damping.data());
+    damping_force_.resize(n_);
+    apply(*matrices_.damping, v, damping_force_.data());
     for (std::size_t i = 0; i < n_; ++i)
-      force[i] += damping[i];
+      force[i] += damping_force_[i];
   }
 }
 

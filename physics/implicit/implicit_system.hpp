@@ -73,6 +73,7 @@ class ImplicitSystem : public SecondOrderSystem {
   ProblemTraits traits_;
   Teuchos::RCP<TpetraMatrix> effective_;
   Teuchos::RCP<TpetraVector> x_, y_;
+  std::vector<double> damping_force_;  // C v, scratch of internal_force()
   SolveReport last_solve_;
   double factor_seconds_ = 0, solve_seconds_ = 0;
 };
