@@ -98,8 +98,8 @@ void add_implicit_parameters(ParameterSpec& spec) {
             "A previous statics step whose displacements start this one (its loads should be "
             "this step's loads at t = 0, so that it starts in balance), or ''.");
   spec.text("Load function", "1",
-            "Scale of every load of this step (gravity included) as a function of time t (s), "
-            "e.g. 'min(t/0.01, 1)' for a ramp.");
+            "Scale of the step's Gravity, Nodal forces and Surface loads as a function of time t "
+            "(s), e.g. 'min(t/0.01, 1)' for a ramp (Moving loads have their own Function).");
   ParameterSpec initial("Initial velocity v = V on a node set.");
   initial.text("Node set", "", "The nodes ('' = every node).");
   initial.real_array("Translation", {0, 0, 0}, "V.", "m/s", 3);
