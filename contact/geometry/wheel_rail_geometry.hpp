@@ -34,7 +34,7 @@ struct WheelsetPose {
   double lateral = 0;   ///< y shift of the wheelset centre (m, to the right)
   double vertical = 0;  ///< z shift of the wheelset centre (m, down)
   double roll = 0;      ///< rotation about x (rad; positive lowers the right wheel)
-  double yaw = 0;       ///< rotation about z (rad; positive turns the axle's right end forward)
+  double yaw = 0;       ///< rotation about z, down (rad; positive turns the axle's right end back)
 };
 
 /// Side of the track.

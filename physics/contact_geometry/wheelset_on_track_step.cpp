@@ -11,37 +11,11 @@
 #include "framework/base/error.hpp"
 #include "framework/output/csv_writer.hpp"
 #include "physics/common/chart_script.hpp"
+#include "physics/common/profile_geometry.hpp"
 
 namespace railfe {
 
 namespace {
-
-// Reads the profile \p file that the deck's \p parameter points to; every error about the file
-// names the deck and that parameter too. Warnings (header settings not applied) go to \p warnings.
-std::shared_ptr<const ProfileCurve> read_curve(const std::string& file, ProfileType role,
-                                               const ProfileReadSettings& checks,
-                                               const std::string& deck,
-                                               const std::string& parameter,
-                                               std::vector<std::string>& warnings) {
-  ProfileFile profile;
-  try {
-    profile = read_profile_file(file, checks, role);
-  } catch (const InputError& error) {
-    throw_input_error(deck, parameter, std::string("profile file ") + error.what());
-  }
-  if (profile.type != role && profile.type != ProfileType::unspecified)
-    throw_input_error(deck, parameter,
-                      "profile file " + file + ": is a " +
-                          (profile.type == ProfileType::rail ? "rail" : "wheel") +
-                          " profile, given as " + parameter,
-                      role == ProfileType::rail ? "a rail profile" : "a wheel profile");
-  for (const std::string& warning : profile.warnings)
-    warnings.push_back(warning + " (" + deck + ": " + parameter + ")");
-  std::vector<Vec2> points;
-  for (const auto& p : profile.points)
-    points.push_back({p[0], p[1]});
-  return spline_curve(points);
-}
 
 // A result about to be written must be finite: a non-finite one is a failed computation.
 double finite(double value, const std::string& where) {
@@ -66,53 +40,7 @@ WheelsetOnTrackStep::WheelsetOnTrackStep(const Teuchos::ParameterList& parameter
     : parameters_(&parameters) {}
 
 void WheelsetOnTrackStep::check(const CheckContext& context) {
-  const Deck& deck = context.model.deck();
-  const auto& profiles = parameters_->sublist("Profiles");
-  ProfileReadSettings checks;
-  checks.smoothing_passes = profiles.get<int>("Smoothing passes");
-  checks.kink_angle_degrees = profiles.get<double>("Kink angle");
-  checks.zigzag_angle_degrees = profiles.get<double>("Zig-zag angle");
-  auto file = [&](const std::string& key, const std::string& shipped) {
-    const auto given = profiles.get<std::string>(key);
-    return given.empty() ? shipped_profile(shipped) : deck.resolve(given);
-  };
-  ProfileReadSettings rail_axes = checks, wheel_axes = checks;
-  rail_axes.mirror_y = profiles.get<bool>("Rail mirrored");
-  wheel_axes.mirror_y = profiles.get<bool>("Wheel mirrored");
-  wheel_axes.y_origin = profiles.get<double>("Wheel running point");
-  const std::string rail_file = file("Rail", "MBench_UIC60_v3.prr");
-  const std::string wheel_file = file("Wheel", "MBench_S1002_v3.prw");
-  std::vector<std::string> warnings;
-  const auto rail = read_curve(rail_file, ProfileType::rail, rail_axes, context.source(),
-                               context.path + "/Profiles/Rail", warnings);
-  const auto wheel = read_curve(wheel_file, ProfileType::wheel, wheel_axes, context.source(),
-                                context.path + "/Profiles/Wheel", warnings);
-  if (context.model.comm().is_root())
-    for (const std::string& warning : warnings)
-      std::cerr << "warning: " << warning << "\n";
-  const auto& t = parameters_->sublist("Track");
-  // Gauge and back-to-back differ by the two flanges (75 mm on standard gauge); a flangeless
-  // test wheel may even have them the other way round, but never far apart.
-  if (std::abs(t.get<double>("Gauge") - t.get<double>("Back to back")) > 0.2)
-    throw_input_error(
-        context.source(), context.path + "/Track/Back to back",
-        CsvWriter::format(t.get<double>("Back to back")) + " m does not fit Track/Gauge = " +
-            CsvWriter::format(t.get<double>("Gauge")) + " m: they differ by more than two flanges",
-        "within 0.2 m of Gauge (1.360 m for 1.435 m gauge)");
-  TrackLayout track{t.get<double>("Gauge"), t.get<double>("Gauge point depth"),
-                    t.get<double>("Inclination"), profiles.get<bool>("Rail canted")};
-  WheelsetLayout wheelset{t.get<double>("Back to back"), t.get<double>("Flange back"),
-                          t.get<double>("Nominal radius")};
-  try {
-    geometry_ = std::make_unique<WheelRailGeometry>(rail, wheel, track, wheelset);
-  } catch (const std::invalid_argument& e) {
-    // The profiles read well but do not fit the track's conventions (no running point, no
-    // gauge point): name both files and the parameters that move them.
-    throw_input_error(context.source(), context.path + "/Profiles",
-                      std::string(e.what()) + " (rail " + rail_file + ", wheel " + wheel_file + ")",
-                      "a wheel through y = 0 (see Wheel running point, Wheel mirrored) and a rail "
-                      "reaching Track/Gauge point depth on its gauge side (see Rail mirrored)");
-  }
+  geometry_ = read_profile_geometry(*parameters_, context);
 
   poses_.clear();
   const auto& poses = parameters_->sublist("Poses");

@@ -35,7 +35,7 @@ class WheelsetOnTrackStep : public AnalysisStep {
   void write_elastic_contacts(StepContext& context, double load);
 
   const Teuchos::ParameterList* parameters_;
-  std::unique_ptr<WheelRailGeometry> geometry_;
+  std::shared_ptr<WheelRailGeometry> geometry_;
   std::vector<DeckPose> poses_;
 };
 

@@ -1,0 +1,274 @@
+#include "contact/enforcement/wheel_rail_contact.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "contact/laws/creep_table.hpp"
+#include "contact/laws/fastsim.hpp"
+#include "contact/laws/saturation.hpp"
+#include "framework/base/error.hpp"
+
+namespace railfe {
+
+namespace {
+
+using Vec3 = std::array<double, 3>;
+
+Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+double dot(const Vec3& a, const Vec3& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+// The axle's direction after roll θx then yaw θz (WheelRailGeometry::locus()).
+Vec3 axle_direction(double roll, double yaw) {
+  return {-std::sin(yaw) * std::cos(roll), std::cos(yaw) * std::cos(roll), std::sin(roll)};
+}
+
+// Finite-difference steps: far above the search's tolerance (1e-12 in the wheel parameter),
+// far below a penetration (~1e-4 m) and a creep velocity (~1e-3 m/s).
+constexpr double position_step = 1e-8;
+constexpr double velocity_step = 1e-6;
+
+}  // namespace
+
+std::string creep_theory_name(CreepTheory theory) {
+  switch (theory) {
+    case CreepTheory::table:
+      return "table";
+    case CreepTheory::linear:
+      return "linear";
+    case CreepTheory::shen_hedrick_elkins:
+      return "shen-hedrick-elkins";
+    case CreepTheory::polach:
+      return "polach";
+    case CreepTheory::fastsim:
+      return "fastsim";
+  }
+  return "?";
+}
+
+CreepTheory creep_theory_from_name(const std::string& name) {
+  for (CreepTheory theory :
+       {CreepTheory::table, CreepTheory::linear, CreepTheory::shen_hedrick_elkins,
+        CreepTheory::polach, CreepTheory::fastsim})
+    if (creep_theory_name(theory) == name)
+      return theory;
+  throw std::invalid_argument("unknown creep theory '" + name + "'");
+}
+
+WheelRailContact::WheelRailContact(std::shared_ptr<const WheelRailGeometry> geometry,
+                                   TrackSide side, bool flange,
+                                   const WheelRailContactSettings& settings)
+    : geometry_(std::move(geometry)), side_(side), flange_(flange), settings_(settings) {
+  modulus_ = contact_modulus(settings.wheel, settings.rail);
+  // Combined constants of two bodies (Kalker): 2/G = 1/G1 + 1/G2, ν/G = (ν1/G1 + ν2/G2)/2.
+  const double g1 = settings.wheel.young / (2 * (1 + settings.wheel.poisson));
+  const double g2 = settings.rail.young / (2 * (1 + settings.rail.poisson));
+  shear_modulus_ = 2 / (1 / g1 + 1 / g2);
+  poisson_ = shear_modulus_ * 0.5 * (settings.wheel.poisson / g1 + settings.rail.poisson / g2);
+  if (settings.theory == CreepTheory::table &&
+      std::abs(poisson_ - CreepTable::shipped().axes().poisson) > 1e-9)
+    throw std::invalid_argument("the creep-force table is made for Poisson's ratio " +
+                                std::to_string(CreepTable::shipped().axes().poisson) + ", not " +
+                                std::to_string(poisson_));
+}
+
+std::string WheelRailContact::name() const {
+  return std::string(side_ == TrackSide::left ? "left" : "right") +
+         (flange_ ? " flange" : " tread");
+}
+
+void WheelRailContact::set_start(double s_wheel, double s_rail) {
+  s_wheel_ = s_wheel;
+  s_rail_ = s_rail;
+  started_ = true;
+}
+
+WheelsetPose WheelRailContact::relative_pose(const ContactKinematics& state) const {
+  WheelsetPose pose;
+  pose.lateral = state.wheelset_u[1] - state.node_u[1];
+  pose.vertical = state.wheelset_u[2] - state.node_u[2];
+  pose.roll = state.wheelset_u[3];
+  pose.yaw = settings_.yaw_exact ? state.wheelset_u[5] : 0.0;
+  return pose;
+}
+
+CreepForces WheelRailContact::creep_forces(const HertzContact& hertz, const Creepages& creep,
+                                           double speed) const {
+  const double mu = settings_.friction, G = shear_modulus_;
+  try {
+    if (settings_.theory == CreepTheory::table)
+      return CreepTable::shipped().forces(hertz.a, hertz.b, G, poisson_, hertz.load, mu, creep);
+    const KalkerCoefficients c = KalkerTable::shipped().at(hertz.a, hertz.b, poisson_);
+    switch (settings_.theory) {
+      case CreepTheory::linear:
+        return kalker_linear(c, G, hertz.a, hertz.b, creep);
+      case CreepTheory::shen_hedrick_elkins:
+        return shen_hedrick_elkins(kalker_linear(c, G, hertz.a, hertz.b, creep), hertz.load, mu);
+      case CreepTheory::polach: {
+        PolachParameters parameters;
+        parameters.friction = mu;
+        parameters.rolling_speed = speed;
+        CreepForces forces = polach(c, G, hertz.a, hertz.b, hertz.load, creep, parameters);
+        forces.Mz = 0;  // Polach's model gives no spin moment
+        return forces;
+      }
+      case CreepTheory::fastsim: {
+        FastsimSettings fast;
+        fast.cells_x = fast.strips = settings_.fastsim_cells;
+        fast.fields = false;
+        return fastsim(c, G, hertz.a, hertz.b, hertz.load, mu, creep, fast).forces;
+      }
+      default:
+        break;
+    }
+  } catch (const std::invalid_argument& error) {
+    std::ostringstream message;
+    message << name() << ": the " << creep_theory_name(settings_.theory)
+            << " creep theory cannot take this contact (a = " << hertz.a << " m, b = " << hertz.b
+            << " m, a/b = " << hertz.a / hertz.b << ", N = " << hertz.load
+            << " N): " << error.what();
+    throw RunError(message.str());
+  }
+  return {};
+}
+
+ContactState WheelRailContact::evaluate(const ContactKinematics& state) {
+  const WheelsetPose pose = relative_pose(state);
+  if (!started_) {
+    const GapSample sample = least_gap_sample(*geometry_, side_, flange_, pose);
+    set_start(sample.s_wheel, sample.s_rail);
+  }
+  ContactPoint point = search_contact(*geometry_, side_, flange_, pose, s_wheel_, s_rail_);
+  if (point.status == SearchStatus::not_converged || point.status == SearchStatus::not_a_minimum) {
+    const GapSample sample = least_gap_sample(*geometry_, side_, flange_, pose);
+    point = search_contact(*geometry_, side_, flange_, pose, sample.s_wheel, sample.s_rail);
+  }
+  if (point.status == SearchStatus::not_converged) {
+    std::ostringstream message;
+    message << "the contact search of the " << name() << " failed (wheelset lateral "
+            << pose.lateral << " m, vertical " << pose.vertical << " m, roll " << pose.roll
+            << " rad relative to the rail) after " << point.iterations << " iterations";
+    throw RunError(message.str());
+  }
+  if (point.status == SearchStatus::converged)
+    set_start(point.s_wheel, point.s_rail);
+  return forces_at(state, point, nullptr);
+}
+
+ContactState WheelRailContact::forces_at(const ContactKinematics& state, const ContactPoint& point,
+                                         const HertzContact* shape) const {
+  const WheelsetPose pose = relative_pose(state);
+  ContactState result;
+  result.point = point;
+  result.active = point.status == SearchStatus::converged && point.gap < 0;
+  const Vec3 n{0, point.normal.y, point.normal.z};
+  const Vec3 t{0, point.normal.z, -point.normal.y};  // n × x
+  const double r0 = geometry_->wheelset().nominal_radius;
+  // The wheel's point: the rail point moved back along the normal by the gap.
+  result.position = {point.x, point.rail_point.y + point.gap * n[1] - pose.lateral,
+                     point.rail_point.z + point.gap * n[2] - (pose.vertical - r0)};
+  if (!result.active)
+    return result;
+  const double A = point.relative_curvature_rolling(), B = point.relative_curvature_lateral();
+  if (!(A > 0 && B > 0)) {
+    std::ostringstream message;
+    message << name() << ": the profiles are not Hertzian at the contact point (relative "
+            << "curvatures A = " << A << " 1/m, B = " << B << " 1/m; wheel parameter "
+            << point.s_wheel << ")";
+    throw RunError(message.str());
+  }
+  if (shape && shape->approach > 0) {
+    // Hertz's ellipse keeps its shape for nearby curvatures: N = K δ^{3/2}, a and b ∝ δ^{1/2}.
+    const double approach = -point.gap, ratio = std::sqrt(approach / shape->approach);
+    result.hertz = *shape;
+    result.hertz.approach = approach;
+    result.hertz.load = shape->stiffness * approach * ratio * std::sqrt(shape->approach);
+    result.hertz.a = shape->a * ratio;
+    result.hertz.b = shape->b * ratio;
+    result.hertz.pressure = shape->pressure * ratio;
+  } else {
+    result.hertz = hertz_from_approach(A, B, modulus_, -point.gap);
+  }
+  Vec3 force{result.hertz.load * n[0], result.hertz.load * n[1], result.hertz.load * n[2]};
+  Vec3 moment{};
+  if (state.speed > 0) {
+    const auto& u = state.wheelset_u;
+    const auto& v = state.wheelset_v;
+    const Vec3 axle = axle_direction(u[3], u[5]);
+    const double spin = state.spin + v[4];
+    const Vec3 omega{spin * axle[0] + v[3], spin * axle[1], spin * axle[2] + v[5]};
+    const Vec3 swept = cross(omega, result.position);
+    const Vec3 slip{state.speed + v[0] + swept[0] - state.node_v[0],
+                    v[1] + swept[1] - state.node_v[1], v[2] + swept[2] - state.node_v[2]};
+    result.creepage = {slip[0] / state.speed, dot(slip, t) / state.speed,
+                       dot(omega, n) / state.speed};
+    result.creep = creep_forces(result.hertz, result.creepage, state.speed);
+    for (int i = 0; i < 3; ++i) {
+      force[i] += result.creep.Fx * (i == 0 ? 1.0 : 0.0) + result.creep.Fy * t[i];
+      moment[i] = result.creep.Mz * n[i];
+    }
+  }
+  result.force = force;
+  const Vec3 lever = cross(result.position, force);
+  for (int i = 0; i < 3; ++i)
+    result.moment[i] = moment[i] + lever[i];
+  return result;
+}
+
+void WheelRailContact::internal_forces(const ContactState& state, const ContactKinematics& at,
+                                       double* wheelset, double* node) {
+  // Generalized forces are the moment's components along the rotations' rates: θx about x,
+  // θy about the axle (the spin), θz about z (docs/theory.md).
+  const Vec3 axle = axle_direction(at.wheelset_u[3], at.wheelset_u[5]);
+  for (int i = 0; i < 3; ++i) {
+    wheelset[i] = -state.force[i];
+    node[i] = state.force[i];
+  }
+  wheelset[3] = -state.moment[0];
+  wheelset[4] = -dot(state.moment, axle);
+  wheelset[5] = -state.moment[2];
+}
+
+void WheelRailContact::tangent(const ContactKinematics& state, const ContactState& at,
+                               double* stiffness, double* damping) const {
+  double base[9], shifted[9];
+  internal_forces(at, state, base, base + 6);
+  for (int pass = 0; pass < 2; ++pass) {
+    double* matrix = pass == 0 ? stiffness : damping;
+    for (int j = 0; j < 9; ++j) {
+      if (j == 0 || j == 6) {
+        // Along the track nothing changes with position (a straight, uniform rail).
+        if (pass == 0) {
+          for (int i = 0; i < 9; ++i)
+            matrix[i * 9 + j] = 0;
+          continue;
+        }
+      }
+      ContactKinematics moved = state;
+      double step = pass == 0 ? position_step : velocity_step;
+      if (pass == 0)
+        (j < 6 ? moved.wheelset_u[j] : moved.node_u[j - 6]) += step;
+      else
+        (j < 6 ? moved.wheelset_v[j] : moved.node_v[j - 6]) += step;
+      ContactPoint point = at.point;
+      if (pass == 0) {
+        // A moved position needs its own contact point, searched from the one at the base.
+        const double s_wheel = at.point.s_wheel, s_rail = at.point.s_rail;
+        point = search_contact(*geometry_, side_, flange_, relative_pose(moved), s_wheel, s_rail);
+        if (point.status == SearchStatus::not_converged)
+          point = at.point;
+      }
+      const ContactState other = forces_at(moved, point, &at.hertz);
+      internal_forces(other, moved, shifted, shifted + 6);
+      for (int i = 0; i < 9; ++i)
+        matrix[i * 9 + j] = (shifted[i] - base[i]) / step;
+    }
+  }
+}
+
+}  // namespace railfe

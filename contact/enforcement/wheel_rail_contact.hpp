@@ -1,0 +1,128 @@
+#pragma once
+/// \file
+/// The wheel–rail contact element of implicit dynamics: a rigid wheelset (a 6-DOF node) whose
+/// wheels are the profiles of a WheelRailGeometry, and per potential contact point (tread and
+/// flange of each wheel) an internal node that stands for the rail's material point under the
+/// contact. The element joins the wheelset to each internal node by Hertz's normal force and
+/// the creep forces of a rolling-contact theory; the internal nodes are tied to the rail by
+/// constraint equations whose multipliers are then the contact forces (the ConstraintSet of the
+/// module that uses the element). The contact point is searched online on the profiles at every
+/// evaluation, started from the last one found.
+///
+/// Conventions (docs/theory.md, "The wheel–rail contact element"): track axes x forward,
+/// y to the right, z down, as contact/geometry; wheelset unknowns u = (x, y, z, θx, θy, θz), the
+/// displacement of its centre and small rotations about the track axes (θx = roll, lowering the
+/// right wheel; θz = the WheelRailGeometry's yaw; θy = the spin's departure from the nominal
+/// spin Ω = −V / r_nominal). Each internal node carries (x, y, z). The element's forces are
+/// returned as internal forces f_int (the negative of the forces acting on the unknowns), so
+/// M a + f_int = f_ext. Creep forces are on the wheel, along the rolling direction x and along
+/// t = n × x in the contact plane, n the rail's outward normal; spin is ω·n / V.
+
+#include <array>
+#include <memory>
+#include <string>
+
+#include "contact/geometry/contact_search.hpp"
+#include "contact/geometry/wheel_rail_geometry.hpp"
+#include "contact/laws/hertz.hpp"
+#include "contact/laws/kalker_linear.hpp"
+
+namespace railfe {
+
+/// The rolling-contact theory that gives the creep forces.
+enum class CreepTheory {
+  table,                ///< the exact solver's creep-force table (CreepTable::shipped())
+  linear,               ///< Kalker's linear theory (unbounded)
+  shen_hedrick_elkins,  ///< the linear theory saturated by Shen, Hedrick & Elkins
+  polach,               ///< Polach's model (k_A = k_S = 1, friction independent of slip)
+  fastsim               ///< Kalker's FASTSIM
+};
+
+/// Name of \p theory as decks spell it ("table", "linear", ...).
+std::string creep_theory_name(CreepTheory theory);
+/// The theory named \p name; throws std::invalid_argument for an unknown name.
+CreepTheory creep_theory_from_name(const std::string& name);
+
+/// Materials, friction and the theory of the element.
+struct WheelRailContactSettings {
+  ElasticBody wheel;                         ///< E, ν of the wheel
+  ElasticBody rail;                          ///< E, ν of the rail
+  double friction = 0.3;                     ///< μ
+  CreepTheory theory = CreepTheory::linear;  ///< creep forces
+  bool yaw_exact = false;  ///< search on the yawed wheel (else yaw is neglected, as the seed)
+  int fastsim_cells = 10;  ///< FASTSIM cells per strip and strips
+};
+
+/// The kinematic state the element sees: the wheelset's and one internal node's.
+struct ContactKinematics {
+  std::array<double, 6> wheelset_u{};  ///< (x, y, z, θx, θy, θz) of the wheelset centre
+  std::array<double, 6> wheelset_v{};  ///< their rates
+  std::array<double, 3> node_u{};      ///< the internal node (the rail's material point)
+  std::array<double, 3> node_v{};      ///< its velocity
+  double speed = 0;  ///< forward speed V (m/s); 0: a static evaluation, no creep forces
+  double spin = 0;   ///< nominal spin Ω about the axle (rad/s; −V / r for rolling forward)
+};
+
+/// What one potential contact point carries.
+struct ContactState {
+  ContactPoint point;                ///< the search's result (gap, angle, curvatures, radius)
+  bool active = false;               ///< penetrating: the point carries force
+  HertzContact hertz;                ///< the ellipse and the normal force (zero when not active)
+  Creepages creepage;                ///< ξ, η, φ (zero when not active or static)
+  CreepForces creep;                 ///< Fx, Fy, Mz on the wheel (contact frame)
+  std::array<double, 3> force{};     ///< total force of the rail on the wheel, track axes (N)
+  std::array<double, 3> moment{};    ///< its moment about the wheelset centre (N m)
+  std::array<double, 3> position{};  ///< wheel contact point relative to the centre (m)
+};
+
+/// One potential contact point (a side and a part) of a wheelset.
+class WheelRailContact {
+ public:
+  /// The point on the \p flange part (else the tread) of \p side's wheel of \p geometry
+  /// (shared, must outlive nothing: it is kept).
+  WheelRailContact(std::shared_ptr<const WheelRailGeometry> geometry, TrackSide side, bool flange,
+                   const WheelRailContactSettings& settings);
+
+  /// Searches the contact for \p state (from the last point found, or from a sampled start
+  /// the first time and after a failed search) and computes the forces. Throws RunError naming
+  /// the point when the search fails or a theory's input leaves its range.
+  ContactState evaluate(const ContactKinematics& state);
+  /// Internal forces of \p state, evaluated at \p at: \p wheelset (6) and \p node (3) receive
+  /// f_int (= −the generalized force on them).
+  static void internal_forces(const ContactState& state, const ContactKinematics& at,
+                              double* wheelset, double* node);
+  /// ∂f_int/∂u and ∂f_int/∂v (9 × 9, row-major, unknowns ordered wheelset then node) at
+  /// \p state, by forward differences from the evaluation \p at. Hertz's ellipse is scaled from
+  /// the one at \p at (its change of shape is left out): the tangent only steers Newton, the
+  /// residual uses exact forces.
+  void tangent(const ContactKinematics& state, const ContactState& at, double* stiffness,
+               double* damping) const;
+  /// Sets the start of the next search (e.g. from the lookup table, or the converged step's).
+  void set_start(double s_wheel, double s_rail);
+  /// "right tread", "left flange", ...
+  std::string name() const;
+  /// The side.
+  TrackSide side() const { return side_; }
+  /// Whether this is the flange point.
+  bool flange() const { return flange_; }
+
+ private:
+  /// Pose of the wheelset relative to the node's rail displacement.
+  WheelsetPose relative_pose(const ContactKinematics& state) const;
+  /// The forces of \p state with the contact point \p point already searched; Hertz's ellipse
+  /// computed afresh, or (\p shape given, for the tangent) scaled from \p shape to the approach.
+  ContactState forces_at(const ContactKinematics& state, const ContactPoint& point,
+                         const HertzContact* shape) const;
+  /// Creep forces of \p theory for \p hertz and \p creep.
+  CreepForces creep_forces(const HertzContact& hertz, const Creepages& creep, double speed) const;
+
+  std::shared_ptr<const WheelRailGeometry> geometry_;
+  TrackSide side_;
+  bool flange_;
+  WheelRailContactSettings settings_;
+  double modulus_ = 0, shear_modulus_ = 0, poisson_ = 0;
+  bool started_ = false;
+  double s_wheel_ = 0, s_rail_ = 0;
+};
+
+}  // namespace railfe

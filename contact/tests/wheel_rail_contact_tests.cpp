@@ -1,0 +1,148 @@
+// The wheel–rail contact element against closed forms: a 1:40 cone on a 300 mm circular crown,
+// where the contact angle, curvatures and lever arms are known, so Hertz's normal force and
+// Kalker's linear creep forces at the element's creepages can be written down independently.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "contact/enforcement/wheel_rail_contact.hpp"
+#include "contact/laws/creep_table.hpp"
+
+namespace railfe {
+namespace {
+
+constexpr double kRail = 0.3;        // crown radius (m)
+constexpr double kGamma = 1.0 / 40;  // cone slope
+
+std::shared_ptr<const WheelRailGeometry> cone_on_crown() {
+  TrackLayout track;
+  track.profile_inclined = true;
+  const double offset = std::sqrt(kRail * kRail - std::pow(kRail - track.gauge_depth, 2));
+  track.gauge = 2 * (0.75 - offset);  // crown tops under the running points
+  const double reach = std::acos(1 - 0.020 / kRail);
+  auto rail = arc_curve({0, kRail}, kRail, -M_PI / 2 - reach, -M_PI / 2 + reach);
+  auto wheel = line_curve({-0.06, -0.06 * kGamma}, {0.07, 0.07 * kGamma});
+  return std::make_shared<WheelRailGeometry>(std::move(rail), std::move(wheel), track,
+                                             WheelsetLayout{});
+}
+
+ContactKinematics rolling_state() {
+  ContactKinematics state;
+  state.wheelset_u = {0, 0.002, 1e-4, 0, 0, 2e-3};  // shifted, pressed down 0.1 mm, yawed
+  state.wheelset_v = {0.01, 0.03, 0, 0, 0, 0};
+  state.speed = 30;
+  state.spin = -state.speed / WheelsetLayout{}.nominal_radius;
+  return state;
+}
+
+TEST(WheelRailContact, ForcesAtAPoseAreHertzAndKalkersLinearTheory) {
+  WheelRailContactSettings settings;
+  settings.wheel = settings.rail = ElasticBody{210e9, 0.3};
+  const auto geometry = cone_on_crown();
+  WheelRailContact contact(geometry, TrackSide::right, false, settings);
+  const ContactKinematics state = rolling_state();
+  const ContactState c = contact.evaluate(state);
+  ASSERT_TRUE(c.active);
+  const double delta = std::atan(kGamma);
+  EXPECT_NEAR(c.point.contact_angle, delta, 1e-12);
+  // Normal force: Hertz with the cone's rolling curvature cos(δ)/R and the crown's 1/R.
+  const double R = c.point.rolling_radius;
+  const double E = contact_modulus(settings.wheel, settings.rail);
+  const HertzContact hertz =
+      hertz_from_approach(std::cos(delta) / (2 * R), 1 / (2 * kRail), E, -c.point.gap);
+  EXPECT_NEAR(c.hertz.load, hertz.load, 1e-9 * hertz.load);
+  // Creepages of a wheel spinning at Ω about its yawed axle a = (−sin ψ, cos ψ, 0), its contact
+  // point r below the centre; slip = V ex + v + Ω a × r; t = n × ex; spin = Ω a·n / V.
+  const double V = state.speed, W = state.spin, psi = state.wheelset_u[5];
+  const double n_y = -std::sin(delta), n_z = -std::cos(delta);  // tilted towards the flange
+  const double r_y = c.point.rail_point.y + c.point.gap * n_y - state.wheelset_u[1];
+  const double r_z = c.point.rail_point.z + c.point.gap * n_z - (state.wheelset_u[2] - 0.46);
+  const double slip_x = V + state.wheelset_v[0] + W * std::cos(psi) * r_z;
+  const double slip_y = state.wheelset_v[1] + W * std::sin(psi) * r_z;
+  const double slip_z = -W * std::sin(psi) * r_y;
+  const double xi = slip_x / V, eta = (n_z * slip_y - n_y * slip_z) / V;
+  const double phi = W * std::cos(psi) * n_y / V;
+  EXPECT_NEAR(c.creepage.longitudinal, xi, 1e-12);
+  EXPECT_NEAR(c.creepage.lateral, eta, 1e-12);
+  EXPECT_NEAR(c.creepage.spin, phi, 1e-12);
+  // Kalker's linear forces on the wheel with G = E / 2(1 + ν).
+  const double G = 210e9 / (2 * 1.3), a = hertz.a, b = hertz.b, ab = a * b, root = std::sqrt(ab);
+  const KalkerCoefficients k = KalkerTable::shipped().at(a, b, 0.3);
+  const double Fx = -G * ab * k.C11 * xi, Fy = -G * ab * (k.C22 * eta + root * k.C23 * phi);
+  const double Mz = G * ab * root * (k.C23 * eta - root * k.C33 * phi);
+  const double N = hertz.load;
+  const double force[3] = {Fx, N * n_y + Fy * n_z, N * n_z - Fy * n_y};
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(c.force[i], force[i], 1e-9 * N) << i;
+  // Moment about the centre: r × F plus the spin moment about the normal.
+  const double r[3] = {0, r_y, r_z};
+  const double moment[3] = {r[1] * force[2] - r[2] * force[1] + 0,
+                            r[2] * force[0] - r[0] * force[2] + Mz * n_y,
+                            r[0] * force[1] - r[1] * force[0] + Mz * n_z};
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(c.moment[i], moment[i], 1e-9 * N * 0.5) << i;
+  // The element's internal forces: the wheelset gets −F, the internal node +F.
+  double wheelset[6], node[3];
+  WheelRailContact::internal_forces(c, state, wheelset, node);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(wheelset[i], -c.force[i]);
+    EXPECT_EQ(node[i], c.force[i]);
+  }
+  EXPECT_EQ(wheelset[3], -c.moment[0]);
+  EXPECT_EQ(wheelset[5], -c.moment[2]);
+}
+
+TEST(WheelRailContact, LiftedWheelCarriesNothing) {
+  WheelRailContact contact(cone_on_crown(), TrackSide::left, false, {});
+  ContactKinematics state = rolling_state();
+  state.wheelset_u[2] = -1e-4;  // lifted by 0.1 mm
+  const ContactState c = contact.evaluate(state);
+  EXPECT_FALSE(c.active);
+  EXPECT_GT(c.point.gap, 0);
+  for (double f : c.force)
+    EXPECT_EQ(f, 0);
+}
+
+TEST(WheelRailContact, TangentMatchesCentralDifferences) {
+  for (CreepTheory theory : {CreepTheory::linear, CreepTheory::fastsim, CreepTheory::polach}) {
+    WheelRailContactSettings settings;
+    settings.theory = theory;
+    settings.friction = 0.3;
+    WheelRailContact contact(cone_on_crown(), TrackSide::right, false, settings);
+    ContactKinematics state = rolling_state();
+    state.wheelset_u[3] = 1e-3;  // some roll, so every coupling is there
+    const ContactState at = contact.evaluate(state);
+    ASSERT_TRUE(at.active);
+    double stiffness[81], damping[81];
+    contact.tangent(state, at, stiffness, damping);
+    // Central differences with a larger step over the vertical position and the lateral velocity.
+    for (int pass = 0; pass < 2; ++pass) {
+      const int j = pass == 0 ? 2 : 1;
+      const double h = pass == 0 ? 1e-7 : 1e-4;
+      double plus[9], minus[9];
+      ContactKinematics up = state, down = state;
+      (pass == 0 ? up.wheelset_u : up.wheelset_v)[j] += h;
+      (pass == 0 ? down.wheelset_u : down.wheelset_v)[j] -= h;
+      WheelRailContact::internal_forces(contact.evaluate(up), up, plus, plus + 6);
+      WheelRailContact::internal_forces(contact.evaluate(down), down, minus, minus + 6);
+      const double* matrix = pass == 0 ? stiffness : damping;
+      double scale = 0;
+      for (int i = 0; i < 9; ++i)
+        scale = std::max(scale, std::abs(matrix[i * 9 + j]));
+      for (int i = 0; i < 9; ++i)
+        EXPECT_NEAR(matrix[i * 9 + j], (plus[i] - minus[i]) / (2 * h), 2e-4 * scale)
+            << creep_theory_name(theory) << " pass " << pass << " row " << i;
+    }
+  }
+}
+
+TEST(WheelRailContact, TableRefusesAnotherPoissonsRatio) {
+  WheelRailContactSettings settings;
+  settings.theory = CreepTheory::table;
+  settings.wheel = settings.rail = ElasticBody{210e9, 0.28};
+  EXPECT_THROW(WheelRailContact(cone_on_crown(), TrackSide::right, false, settings),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace railfe

@@ -1,0 +1,81 @@
+#include "physics/wheelset_dynamics/wheelset_balance.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "contact/geometry/contact_table.hpp"
+#include "framework/base/error.hpp"
+
+namespace railfe {
+
+namespace {
+
+// The vertical and roll residuals f_ext − f_int at u (velocities zero).
+std::array<double, 2> residual(WheelsetSystem& system, const std::vector<double>& u) {
+  std::vector<double> zero(u.size(), 0.0), internal(u.size()), external(u.size());
+  system.internal_force(u.data(), zero.data(), internal.data());
+  system.external_force(0, external.data());
+  return {external[2] - internal[2], external[3] - internal[3]};
+}
+
+}  // namespace
+
+WheelsetBalance balance_wheelset(WheelsetSystem& system, const WheelRailGeometry& geometry,
+                                 std::vector<double>& u) {
+  system.set_rolling(false);
+  // Rails' offsets are the same for all internal nodes: take the right tread's.
+  const double rail_y = u[6 + 1], rail_z = u[6 + 2];
+  const double relative = u[1] - rail_y;
+  const RigidContact rigid = solve_rigid_contact(geometry, relative, 0.0, nullptr);
+  if (!rigid.converged) {
+    std::ostringstream message;
+    message << "the wheelset cannot be placed on the rails at a lateral shift of " << relative
+            << " m: the rigid contact of the profiles was not found (the profiles do not touch "
+               "there; see Initial lateral shift and the profiles' Track dimensions)";
+    throw RunError(message.str());
+  }
+  std::vector<double> external(u.size());
+  system.external_force(0, external.data());
+  WheelsetBalance balance;
+  balance.weight = external[2];
+  // Start from the Hertz approach of half the load on each wheel, a guess within a factor of
+  // a few, so that Newton starts where the force grows with the approach.
+  u[2] = rail_z + rigid.vertical + 2e-5;
+  u[3] = rigid.roll;
+  const double scale = std::max(balance.weight, 1.0);
+  for (; balance.iterations < 100; ++balance.iterations) {
+    const auto r = residual(system, u);
+    balance.residual = std::hypot(r[0], r[1]);
+    if (balance.residual <= 1e-10 * scale)
+      return balance;
+    // Jacobian by forward differences (the search is exact to 1e-12 m).
+    double J[2][2];
+    for (int j = 0; j < 2; ++j) {
+      std::vector<double> moved = u;
+      const double h = 1e-9;
+      moved[2 + j] += h;
+      const auto rj = residual(system, moved);
+      for (int i = 0; i < 2; ++i)
+        J[i][j] = (rj[i] - r[i]) / h;
+    }
+    const double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+    if (!(std::abs(det) > 0) || !std::isfinite(det))
+      break;
+    double dz = -(J[1][1] * r[0] - J[0][1] * r[1]) / det;
+    double droll = -(-J[1][0] * r[0] + J[0][0] * r[1]) / det;
+    // A Hertz spring is soft near zero approach: limit each step to 0.1 mm and 1 mrad.
+    const double limit = std::max(std::abs(dz) / 1e-4, std::abs(droll) / 1e-3);
+    if (limit > 1) {
+      dz /= limit;
+      droll /= limit;
+    }
+    u[2] += dz;
+    u[3] += droll;
+  }
+  std::ostringstream message;
+  message << "the static balance of the wheelset did not converge (residual " << balance.residual
+          << " N after " << balance.iterations << " Newton iterations)";
+  throw RunError(message.str());
+}
+
+}  // namespace railfe

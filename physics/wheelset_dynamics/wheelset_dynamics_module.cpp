@@ -1,0 +1,108 @@
+#include "physics/wheelset_dynamics/wheelset_dynamics_module.hpp"
+
+#include "physics/common/profile_geometry.hpp"
+#include "physics/wheelset_dynamics/wheelset_dynamics_step.hpp"
+
+namespace railfe {
+
+namespace {
+
+ParameterSpec wheelset_parameters() {
+  ParameterSpec spec("The rigid wheelset.");
+  spec.real("Mass", 1500, "m.", "kg", Range::positive());
+  spec.real("Roll inertia", 800, "About the track's x axis.", "kg m^2", Range::positive());
+  spec.real("Spin inertia", 100, "About the axle.", "kg m^2", Range::positive());
+  spec.real("Yaw inertia", 800, "About the vertical.", "kg m^2", Range::positive());
+  spec.real("Axle load", 0,
+            "Vertical force on the axle boxes besides the wheelset's weight (the share of bogie "
+            "and car body).",
+            "N", Range::non_negative());
+  spec.real("Gravity", 9.81, "g.", "m/s^2", Range::non_negative());
+  return spec;
+}
+
+ParameterSpec suspension_parameters() {
+  ParameterSpec spec("Springs and dampers of each axle box to a frame running at Speed.");
+  spec.real_array("Stiffness", {0, 0, 0}, "Per axle box along x, y, z.", "N/m", 3,
+                  Range::non_negative());
+  spec.real_array("Damping", {0, 0, 0}, "Per axle box along x, y, z.", "N s/m", 3,
+                  Range::non_negative());
+  spec.real("Half spacing", 1.0, "Lateral distance of each axle box from the centre.", "m",
+            Range::positive());
+  return spec;
+}
+
+ParameterSpec contact_parameters() {
+  ParameterSpec spec("The contact element.");
+  spec.real("Young's modulus", 210e9, "Of wheel and rail.", "Pa", Range::positive());
+  spec.real("Poisson's ratio", 0.3,
+            "Of wheel and rail (the creep-force table is made for 0.3; Kalker's coefficients "
+            "cover 0 to 0.5).",
+            "", Range::closed(0.0, 0.5));
+  spec.real("Friction", 0.3, "μ.", "", Range::open_closed(0, 2));
+  spec.choice("Creep theory", "table",
+              {{"table", "the exact steady-rolling solver's creep-force table (the seed's choice)"},
+               {"linear", "Kalker's linear theory, unbounded"},
+               {"shen-hedrick-elkins", "Kalker's linear theory saturated by Shen-Hedrick-Elkins"},
+               {"polach", "Polach's model (k_A = k_S = 1, friction independent of slip)"},
+               {"fastsim", "Kalker's FASTSIM"}},
+              "Tangential forces from the creepages.");
+  spec.integer("FASTSIM cells", 10, "Cells per strip and strips.", Range::at_least(2));
+  spec.only_when("Creep theory", {"fastsim"}, {"FASTSIM cells"});
+  spec.choice("Yaw", "neglected",
+              {{"neglected", "the contact search ignores yaw (the seed's choice)"},
+               {"exact", "the search works on the yawed wheel's contact locus"}},
+              "Yaw in the contact geometry (creepages always take it).");
+  return spec;
+}
+
+ParameterSpec wheelset_dynamics_parameters() {
+  ParameterSpec spec(
+      "A rigid wheelset on its suspension running on rigid rails: Hertz normal contact, creep "
+      "forces and online contact search at tread and flange of each wheel, contact forces as "
+      "Lagrange multipliers, HHT-alpha from the static balance.");
+  spec.sublist("Profiles", profile_parameters(), "Profile files.");
+  spec.sublist("Track", track_parameters(), "Track and wheelset dimensions.");
+  spec.sublist("Wheelset", wheelset_parameters(), "Mass and loads.");
+  spec.sublist("Suspension", suspension_parameters(), "Primary suspension.");
+  spec.sublist("Contact", contact_parameters(), "The contact element.");
+  spec.required_real("Speed", "Forward speed (creepages divide by it).", "m/s", Range::positive());
+  spec.real("Start", 0, "Position along the track at t = 0 (the irregularities' s).", "m");
+  spec.required_real("End time", "Simulated duration.", "s", Range::positive());
+  spec.required_real("Time step", "Δt.", "s", Range::positive());
+  spec.real("Alpha", 0.0,
+            "HHT alpha in [-1/3, 0] (beta = (1-alpha)^2/4, gamma = (1-2 alpha)/2; 0: the "
+            "average-acceleration rule, no numerical damping).",
+            "", Range::closed(-1.0 / 3.0, 0));
+  spec.integer("Newton iterations", 25, "Corrections allowed per step.", Range::at_least(1));
+  spec.real("Initial lateral shift", 0, "Wheelset's lateral displacement at t = 0 (right).", "m");
+  spec.real("Initial yaw", 0, "Wheelset's yaw at t = 0.", "rad");
+  spec.real("Initial lateral velocity", 0, "Wheelset's lateral velocity at t = 0.", "m/s");
+  spec.text("Lateral irregularity", "",
+            "Lateral offset of both rails (right positive) as a function of the track position s "
+            "(write it with the variable x) ('' = none).");
+  spec.text("Vertical irregularity", "",
+            "Vertical offset of both rails (down positive) as a function of s (variable x) ('' = "
+            "none).");
+  spec.real("History interval", 0, "Time between rows of the histories (0: every step).", "s",
+            Range::non_negative());
+  return spec;
+}
+
+}  // namespace
+
+ModuleDescriptor wheelset_dynamics_module() {
+  ModuleDescriptor module;
+  module.name = "wheelset dynamics";
+  module.summary =
+      "A rigid wheelset on rigid rails with the implicit wheel-rail contact element (Hertz, "
+      "creep forces, online search, Lagrange multipliers), HHT-alpha from the static balance.";
+  module.parameters = wheelset_dynamics_parameters;
+  module.create = [](const Teuchos::ParameterList& parameters) {
+    return std::make_unique<WheelsetDynamicsStep>(parameters);
+  };
+  module.needs_mesh = false;
+  return module;
+}
+
+}  // namespace railfe

@@ -1,0 +1,264 @@
+#include "physics/wheelset_dynamics/wheelset_dynamics_step.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "framework/base/error.hpp"
+#include "framework/deck/expression.hpp"
+#include "framework/output/csv_writer.hpp"
+#include "framework/solvers/saddle_point_solvers.hpp"
+#include "framework/time/newmark.hpp"
+#include "framework/time/newton_step.hpp"
+#include "physics/common/profile_geometry.hpp"
+#include "physics/wheelset_dynamics/wheelset_balance.hpp"
+#include "physics/wheelset_dynamics/wheelset_oscillation.hpp"
+
+namespace railfe {
+
+namespace {
+
+const char* kContactNames[n_wheelset_contacts] = {"right_tread", "right_flange", "left_tread",
+                                                  "left_flange"};
+
+// A function of the track position s written in the deck (variable x), or none for ''.
+std::function<double(double)> track_function(const Teuchos::ParameterList& step,
+                                             const std::string& key, const std::string& deck,
+                                             const std::string& path) {
+  const std::string text = step.get<std::string>(key);
+  if (text.empty())
+    return {};
+  auto expression = std::make_shared<Expression>(text, deck, path + "/" + key);
+  return [expression](double s) { return (*expression)(s, 0, 0, 0); };
+}
+
+WheelRailContactSettings contact_settings(const Teuchos::ParameterList& step) {
+  const auto& c = step.sublist("Contact");
+  WheelRailContactSettings settings;
+  settings.wheel = settings.rail =
+      ElasticBody{c.get<double>("Young's modulus"), c.get<double>("Poisson's ratio")};
+  settings.friction = c.get<double>("Friction");
+  settings.theory = creep_theory_from_name(c.get<std::string>("Creep theory"));
+  settings.yaw_exact = c.get<std::string>("Yaw") == "exact";
+  settings.fastsim_cells = c.get<int>("FASTSIM cells");
+  return settings;
+}
+
+// Vertical (Q, up on the wheel) and lateral (Y, towards the track centre on the wheel) forces
+// of one wheel, summed over its tread and flange.
+std::array<double, 2> wheel_forces(const std::array<ContactState, n_wheelset_contacts>& states,
+                                   int side) {
+  const int first = side == 0 ? 0 : 2;
+  const double inward = side == 0 ? -1.0 : 1.0;  // the right wheel's centre side is −y
+  double Q = 0, Y = 0;
+  for (int k = first; k < first + 2; ++k) {
+    Q -= states[k].force[2];
+    Y += inward * states[k].force[1];
+  }
+  return {Q, Y};
+}
+
+}  // namespace
+
+WheelsetDynamicsStep::WheelsetDynamicsStep(const Teuchos::ParameterList& parameters)
+    : parameters_(&parameters) {}
+
+void WheelsetDynamicsStep::check(const CheckContext& context) {
+  geometry_ = read_profile_geometry(*parameters_, context);
+  for (const char* key : {"Lateral irregularity", "Vertical irregularity"})
+    track_function(*parameters_, key, context.source(), context.path);
+  try {
+    WheelRailContact(geometry_, TrackSide::right, false, contact_settings(*parameters_));
+  } catch (const std::invalid_argument& error) {
+    throw_input_error(context.source(), context.path + "/Contact/Creep theory", error.what(),
+                      "Poisson's ratio 0.3 with the table, or another theory");
+  }
+  const double dt = parameters_->get<double>("Time step");
+  if (dt > parameters_->get<double>("End time"))
+    throw_input_error(context.source(), context.path + "/Time step", "is longer than End time",
+                      "at most End time");
+}
+
+void WheelsetDynamicsStep::run(StepContext& context) {
+  const auto& p = *parameters_;
+  const bool root = context.model.comm().is_root();
+  const std::string section = "Step " + context.step_name + " (wheelset dynamics)";
+  const auto wall_start = std::chrono::steady_clock::now();
+  const double V = p.get<double>("Speed");
+  const auto& w = p.sublist("Wheelset");
+  WheelsetBody body{w.get<double>("Mass"),         w.get<double>("Roll inertia"),
+                    w.get<double>("Spin inertia"), w.get<double>("Yaw inertia"),
+                    w.get<double>("Axle load"),    w.get<double>("Gravity")};
+  const auto& s = p.sublist("Suspension");
+  AxleBoxSuspension suspension;
+  const auto stiffness = s.get<Teuchos::Array<double>>("Stiffness");
+  const auto damping = s.get<Teuchos::Array<double>>("Damping");
+  for (int i = 0; i < 3; ++i) {
+    suspension.stiffness[i] = stiffness[i];
+    suspension.damping[i] = damping[i];
+  }
+  suspension.half_spacing = s.get<double>("Half spacing");
+  WheelsetSystem system(geometry_, contact_settings(p), body, suspension, V, 0.0);
+  RigidRails rails(track_function(p, "Lateral irregularity", context.source(), context.path),
+                   track_function(p, "Vertical irregularity", context.source(), context.path),
+                   p.get<double>("Start"), V);
+
+  // Static balance at the initial pose, the internal nodes on the rails.
+  std::vector<double> u(n_wheelset_unknowns, 0.0), v(u.size(), 0.0), a(u.size(), 0.0);
+  const auto offset = rails.offsets(0);
+  for (int k = 0; k < n_wheelset_contacts; ++k) {
+    u[6 + 3 * k + 1] = offset[0];
+    u[6 + 3 * k + 2] = offset[1];
+  }
+  u[1] = p.get<double>("Initial lateral shift") + offset[0];
+  u[5] = p.get<double>("Initial yaw");
+  WheelsetBalance balance;
+  try {
+    balance = balance_wheelset(system, *geometry_, u);
+  } catch (const RunError& error) {
+    throw RunError(context.path + ": " + error.what());
+  }
+  auto states = system.contact_states(u.data(), v.data());
+  const auto right = wheel_forces(states, 0), left = wheel_forces(states, 1);
+  context.summary.add(section, "static load right wheel", right[0], "N");
+  context.summary.add(section, "static load left wheel", left[0], "N");
+  context.summary.add(section, "weight and axle load", balance.weight, "N");
+  context.summary.add(section, "static balance iterations", balance.iterations);
+  {
+    CsvWriter file(context.output.staging_path(context.step_name + "_static.csv"),
+                   {"wheel", "Q_N", "Y_N", "contact_angle_rad", "rolling_radius_m"}, root);
+    for (int side = 0; side < 2; ++side) {
+      const auto& tread = states[side == 0 ? 0 : 2];
+      const auto f = side == 0 ? right : left;
+      file.write_row({side == 0 ? "right" : "left", CsvWriter::format(f[0]),
+                      CsvWriter::format(f[1]), CsvWriter::format(tread.point.contact_angle),
+                      CsvWriter::format(tread.point.rolling_radius)});
+    }
+    file.write_row({"total", CsvWriter::format(right[0] + left[0]),
+                    CsvWriter::format(right[1] - left[1]), "", ""});
+    file.write_row({"weight", CsvWriter::format(balance.weight), "0", "", ""});
+  }
+
+  // The nominal spin: rolling without longitudinal creep at the mean tread radius.
+  const double radius = 0.5 * (states[0].point.rolling_radius + states[2].point.rolling_radius);
+  system.set_spin(-V / radius);
+  system.set_rolling(true);
+  v[1] = p.get<double>("Initial lateral velocity");
+  NewtonSettings newton;
+  newton.max_iterations = p.get<int>("Newton iterations");
+  NewtonStepSolver solver(system, newton);
+  MonolithicSaddlePointSolver saddle(system);
+  solver.constrain(&rails, &saddle);
+  {
+    std::vector<double> rate(3 * n_wheelset_contacts), unused(rate.size());
+    rails.rates(0, u.data(), v.data(), rate.size(), rate.data(), unused.data());
+    for (std::size_t i = 0; i < rate.size(); ++i)
+      v[6 + i] = rate[i];
+  }
+  solver.initial_acceleration(0, u.data(), v.data(), a.data());
+  NewmarkIntegrator integrator(NewmarkScheme::hht(p.get<double>("Alpha")), u.size());
+
+  std::vector<std::string> columns{"time_s",    "x_m",        "y_m",
+                                   "z_m",       "roll_rad",   "spin_rad",
+                                   "yaw_rad",   "vy_m_per_s", "yaw_rate_rad_per_s",
+                                   "iterations"};
+  CsvWriter history(context.output.staging_path(context.step_name + "_wheelset.csv"), columns,
+                    root);
+  std::vector<std::string> contact_columns{"time_s"};
+  for (const char* name : kContactNames)
+    for (const char* q : {"active", "rail_y_m", "contact_angle_rad", "N_N", "Fx_N", "Fy_N", "xi",
+                          "eta", "phi_per_m"})
+      contact_columns.push_back(std::string(name) + "_" + q);
+  for (const char* wheel : {"right", "left"})
+    for (const char* q : {"Q_N", "Y_N", "Y_over_Q"})
+      contact_columns.push_back(std::string(wheel) + "_" + q);
+  CsvWriter contacts(context.output.staging_path(context.step_name + "_contacts.csv"),
+                     contact_columns, root);
+  CsvWriter events(context.output.staging_path(context.step_name + "_contact_events.csv"),
+                   {"time_s", "contact", "event", "N_N"}, root);
+  auto write_rows = [&](double time, int iterations) {
+    history.write_row(
+        {time, u[0], u[1], u[2], u[3], u[4], u[5], v[1], v[5], static_cast<double>(iterations)});
+    std::vector<double> row{time};
+    for (const ContactState& c : states)
+      for (double value :
+           {c.active ? 1.0 : 0.0, c.point.rail_point.y, c.point.contact_angle, c.hertz.load,
+            c.creep.Fx, c.creep.Fy, c.creepage.longitudinal, c.creepage.lateral, c.creepage.spin})
+        row.push_back(value);
+    for (int side = 0; side < 2; ++side) {
+      const auto f = wheel_forces(states, side);
+      row.insert(row.end(), {f[0], f[1], f[0] > 0 ? f[1] / f[0] : 0.0});
+    }
+    contacts.write_row(row);
+  };
+
+  const double end = p.get<double>("End time"), dt = p.get<double>("Time step");
+  const double interval = p.get<double>("History interval");
+  const long n_steps = std::lround(std::ceil(end / dt - 1e-9));
+  states = system.contact_states(u.data(), v.data());
+  write_rows(0, 0);
+  std::array<bool, n_wheelset_contacts> active;
+  for (int k = 0; k < n_wheelset_contacts; ++k)
+    active[k] = states[k].active;
+  OscillationMeter oscillation;
+  oscillation.add(0, u[1] - offset[0]);
+  double next_output = interval;
+  std::size_t n_events = 0;
+  auto progress = context.progress("time steps", static_cast<double>(n_steps));
+  double time = 0;
+  for (long n = 0; n < n_steps; ++n) {
+    try {
+      integrator.step(time, dt, solver, u.data(), v.data(), a.data());
+    } catch (const StepNotConverged& error) {
+      std::ostringstream message;
+      message << context.path << ": Newton did not converge in the step from t = " << error.time
+              << " s (Δt " << error.step << " s): " << error.what()
+              << "; the run stops here rather than go on with an unbalanced state";
+      throw RunError(message.str());
+    }
+    time = (n + 1) * dt;
+    states = system.contact_states(u.data(), v.data());
+    for (int k = 0; k < n_wheelset_contacts; ++k)
+      if (states[k].active != active[k]) {
+        active[k] = states[k].active;
+        ++n_events;
+        events.write_row({CsvWriter::format(time), kContactNames[k],
+                          active[k] ? (k % 2 ? "flange contact" : "contact") : "separation",
+                          CsvWriter::format(states[k].hertz.load)});
+      }
+    oscillation.add(time, u[1] - rails.offsets(time)[0]);
+    if (time >= next_output - 1e-9 * dt || n + 1 == n_steps) {
+      write_rows(time, solver.statistics().last_iterations);
+      next_output += interval;
+    }
+    progress.update(static_cast<double>(n + 1));
+  }
+  progress.finish();
+
+  CsvWriter measurements(
+      context.output.staging_path(context.step_name + "_measurements.csv"),
+      {"quantity", "period_s", "wavelength_m", "amplitude_m", "growth_per_cycle", "cycles"}, root);
+  const OscillationMeasure measure = oscillation.measure();
+  if (measure.cycles >= 1)
+    measurements.write_row(
+        {"lateral", CsvWriter::format(measure.period), CsvWriter::format(measure.period * V),
+         CsvWriter::format(measure.amplitude), CsvWriter::format(measure.growth_per_cycle),
+         std::to_string(measure.cycles)});
+  const NewtonStatistics& statistics = solver.statistics();
+  context.summary.add(section, "steps", static_cast<double>(statistics.steps));
+  context.summary.add(section, "Newton iterations per step",
+                      statistics.steps ? double(statistics.iterations) / statistics.steps : 0.0);
+  context.summary.add(section, "most Newton iterations in a step",
+                      static_cast<double>(statistics.most_iterations));
+  context.summary.add(section, "contact events", static_cast<double>(n_events));
+  if (measure.cycles >= 1) {
+    context.summary.add(section, "lateral wavelength", measure.period * V, "m");
+    context.summary.add(section, "lateral growth per cycle", measure.growth_per_cycle);
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  context.summary.add(section, "wall time", seconds, "s");
+  context.summary.add(section, "wall time per step", seconds / std::max(1L, n_steps), "s");
+}
+
+}  // namespace railfe
