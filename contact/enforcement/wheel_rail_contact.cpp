@@ -155,6 +155,19 @@ ContactState WheelRailContact::evaluate(const ContactKinematics& state) {
             << " rad relative to the rail) after " << point.iterations << " iterations";
     throw RunError(message.str());
   }
+  if (table_) {
+    const auto start = table_->start(side_, flange_, pose.lateral);
+    if (std::abs(start[0] - s_wheel_) > 1e-3) {
+      const ContactPoint other =
+          search_contact(*geometry_, side_, flange_, pose, start[0], start[1]);
+      const bool better = other.status == SearchStatus::converged &&
+                          (point.status != SearchStatus::converged || other.gap < point.gap);
+      if (better) {
+        point = other;
+        ++table_jumps_;
+      }
+    }
+  }
   if (point.status == SearchStatus::converged)
     set_start(point.s_wheel, point.s_rail);
   return forces_at(state, point, nullptr);
@@ -174,12 +187,20 @@ ContactState WheelRailContact::forces_at(const ContactKinematics& state, const C
                      point.rail_point.z + point.gap * n[2] - (pose.vertical - r0)};
   if (!result.active)
     return result;
-  const double A = point.relative_curvature_rolling(), B = point.relative_curvature_lateral();
+  double A = point.relative_curvature_rolling(), B = point.relative_curvature_lateral();
+  const double limit = settings_.curvature_ratio_limit;
+  if (limit > 0 && std::max(A, B) > 0) {
+    const double least = std::max(A, B) / limit;
+    result.conformal = A < least || B < least;
+    A = std::max(A, least);
+    B = std::max(B, least);
+  }
   if (!(A > 0 && B > 0)) {
     std::ostringstream message;
     message << name() << ": the profiles are not Hertzian at the contact point (relative "
             << "curvatures A = " << A << " 1/m, B = " << B << " 1/m; wheel parameter "
-            << point.s_wheel << ")";
+            << point.s_wheel << "); Hertz does not apply (a curvature ratio limit would raise "
+            << "the smaller one)";
     throw RunError(message.str());
   }
   if (shape && shape->approach > 0) {
@@ -260,7 +281,9 @@ void WheelRailContact::tangent(const ContactKinematics& state, const ContactStat
         // A moved position needs its own contact point, searched from the one at the base.
         const double s_wheel = at.point.s_wheel, s_rail = at.point.s_rail;
         point = search_contact(*geometry_, side_, flange_, relative_pose(moved), s_wheel, s_rail);
-        if (point.status == SearchStatus::not_converged)
+        // The derivative is that of this contact: a search that fails or lands on another
+        // minimum (a step of 1e-8 cannot move the point by 0.1 mm) keeps the base point.
+        if (point.status != SearchStatus::converged || std::abs(point.s_wheel - s_wheel) > 1e-4)
           point = at.point;
       }
       const ContactState other = forces_at(moved, point, &at.hertz);

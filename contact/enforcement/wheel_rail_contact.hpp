@@ -23,6 +23,7 @@
 #include <string>
 
 #include "contact/geometry/contact_search.hpp"
+#include "contact/geometry/contact_table.hpp"
 #include "contact/geometry/wheel_rail_geometry.hpp"
 #include "contact/laws/hertz.hpp"
 #include "contact/laws/kalker_linear.hpp"
@@ -51,6 +52,10 @@ struct WheelRailContactSettings {
   CreepTheory theory = CreepTheory::linear;  ///< creep forces
   bool yaw_exact = false;  ///< search on the yawed wheel (else yaw is neglected, as the seed)
   int fastsim_cells = 10;  ///< FASTSIM cells per strip and strips
+  /// Where the profiles are nearly conformal (a flange root), Hertz's relative curvatures are
+  /// kept to within this ratio of each other by raising the smaller one, so the ellipse stays
+  /// within a/b ≈ 1/5..5; 0 refuses such a contact instead (RunError).
+  double curvature_ratio_limit = 10;
 };
 
 /// The kinematic state the element sees: the wheelset's and one internal node's.
@@ -67,6 +72,7 @@ struct ContactKinematics {
 struct ContactState {
   ContactPoint point;                ///< the search's result (gap, angle, curvatures, radius)
   bool active = false;               ///< penetrating: the point carries force
+  bool conformal = false;            ///< a relative curvature was raised (curvature_ratio_limit)
   HertzContact hertz;                ///< the ellipse and the normal force (zero when not active)
   Creepages creepage;                ///< ξ, η, φ (zero when not active or static)
   CreepForces creep;                 ///< Fx, Fy, Mz on the wheel (contact frame)
@@ -99,6 +105,12 @@ class WheelRailContact {
                double* damping) const;
   /// Sets the start of the next search (e.g. from the lookup table, or the converged step's).
   void set_start(double s_wheel, double s_rail);
+  /// Uses \p table (shared; null: none) to predict jumps: where the table's start for the
+  /// relative lateral shift lies more than 1 mm of wheel profile from the last point found,
+  /// the part is searched from both and the deeper contact is taken.
+  void use_table(std::shared_ptr<const ContactTable> table) { table_ = std::move(table); }
+  /// Evaluations where the table's start gave the contact (a predicted jump).
+  std::size_t table_jumps() const { return table_jumps_; }
   /// "right tread", "left flange", ...
   std::string name() const;
   /// The side.
@@ -121,6 +133,8 @@ class WheelRailContact {
   bool flange_;
   WheelRailContactSettings settings_;
   double modulus_ = 0, shear_modulus_ = 0, poisson_ = 0;
+  std::shared_ptr<const ContactTable> table_;
+  std::size_t table_jumps_ = 0;
   bool started_ = false;
   double s_wheel_ = 0, s_rail_ = 0;
 };

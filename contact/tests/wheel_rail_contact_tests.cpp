@@ -136,6 +136,38 @@ TEST(WheelRailContact, TangentMatchesCentralDifferences) {
   }
 }
 
+TEST(WheelRailContact, NearlyConformalCurvaturesAreRaisedToTheRatioLimit) {
+  // A concave tread of radius 0.31 m on the 0.3 m crown: B = (1/0.3 − 1/0.31)/2 = 0.054 /m
+  // against A = 1/(2 r) ≈ 1.09 /m, a ratio of 20. The limit 10 raises B to A/10; without a limit
+  // Hertz takes the curvatures as they are.
+  TrackLayout track;
+  track.profile_inclined = true;
+  const double offset = std::sqrt(kRail * kRail - std::pow(kRail - track.gauge_depth, 2));
+  track.gauge = 2 * (0.75 - offset);
+  const double reach = std::acos(1 - 0.020 / kRail), radius = 0.31;
+  auto rail = arc_curve({0, kRail}, kRail, -M_PI / 2 - reach, -M_PI / 2 + reach);
+  auto wheel = arc_curve({0, radius}, radius, -M_PI / 2 - 0.15, -M_PI / 2 + 0.15);
+  auto geometry = std::make_shared<WheelRailGeometry>(std::move(rail), std::move(wheel), track,
+                                                      WheelsetLayout{});
+  ContactKinematics state;
+  state.wheelset_u = {0, 0, 5e-5, 0, 0, 0};
+  for (double limit : {10.0, 0.0}) {
+    WheelRailContactSettings settings;
+    settings.curvature_ratio_limit = limit;
+    WheelRailContact contact(geometry, TrackSide::right, false, settings);
+    const ContactState c = contact.evaluate(state);
+    ASSERT_TRUE(c.active);
+    const double A = c.point.relative_curvature_rolling();
+    const double B = c.point.relative_curvature_lateral();
+    EXPECT_NEAR(B, 0.5 * (1 / kRail - 1 / radius), 1e-9);
+    const double E = contact_modulus(settings.wheel, settings.rail);
+    const HertzContact expected =
+        hertz_from_approach(A, limit > 0 ? A / limit : B, E, -c.point.gap);
+    EXPECT_EQ(c.conformal, limit > 0);
+    EXPECT_NEAR(c.hertz.load, expected.load, 1e-9 * expected.load);
+  }
+}
+
 TEST(WheelRailContact, TableRefusesAnotherPoissonsRatio) {
   WheelRailContactSettings settings;
   settings.theory = CreepTheory::table;

@@ -238,6 +238,33 @@ TEST(HhtNewton, ReportsAStepThatDoesNotConverge) {
   EXPECT_EQ(v, 20.0);
 }
 
+TEST(HhtNewton, LineSearchConvergesWhereFullStepsCycle) {
+  // The step above, where full Newton corrections on F atan(u) overshoot from one flat branch
+  // to the other: halving the corrections that raise the residual converges without any cut
+  // back of the step, and the result satisfies the step's equation.
+  for (bool line_search : {false, true}) {
+    ScalarSystem spring = saturating_spring(1000);
+    NewtonSettings settings;
+    settings.max_iterations = 30;
+    settings.line_search = line_search;
+    CutBackSettings cut_back;
+    cut_back.max_halvings = 0;
+    HhtIntegrator integrator(NewmarkScheme::hht(-0.1), spring, settings, {}, cut_back);
+    double u = 0, v = 20, a = 0;
+    integrator.initialize(0, &u, &v, &a);
+    if (!line_search) {
+      EXPECT_THROW(integrator.advance(1.0, 0.4, &u, &v, &a), StepNotConverged);
+      continue;
+    }
+    ASSERT_NO_THROW(integrator.advance(1.0, 0.4, &u, &v, &a));
+    // HHT-α balance of the step from (0, 20, a0 = 0): m a1 + (1+α) f(u1) − α f(u0) = 0.
+    const double alpha = -0.1, f1 = 1000 * std::atan(u);
+    EXPECT_NEAR(a + (1 + alpha) * f1, 0.0, 1e-6 * std::abs(f1));
+    std::printf("converged in %d corrections: u = %.6f\n",
+                integrator.newton_statistics().last_iterations, u);
+  }
+}
+
 TEST(HhtNewton, NewmarkParametersAreChecked) {
   EXPECT_NO_THROW(NewmarkScheme::newmark(0.3025, 0.6));
   EXPECT_THROW(NewmarkScheme::newmark(0.25, 0.4), std::invalid_argument);

@@ -204,6 +204,11 @@ void NewtonStepSolver::iterate(const StepState& state, double* a) {
   std::vector<double>& residuals = statistics_.last_residuals;
   residuals.clear();
   double increment = std::numeric_limits<double>::infinity();
+  // Backtracking (settings_.line_search): the iterate before the last correction, the
+  // correction and its fraction taken, and the residual there.
+  std::vector<double> a_base, lambda_base, mu_taken;
+  double step_fraction = 1, base_residual = std::numeric_limits<double>::infinity();
+  int halvings = 0;
   for (int iteration = 0;; ++iteration) {
     for (std::size_t i = 0; i < n; ++i) {
       u_[i] = state.u_predicted[i] + beta * dt * dt * a[i];
@@ -226,6 +231,21 @@ void NewtonStepSolver::iterate(const StepState& state, double* a) {
       }
     }
     const double residual = norm(residual_);
+    // Only from an iterate that satisfies the (linear) constraint rows: the first correction
+    // moves the constrained unknowns onto them, which ‖R‖ alone does not measure.
+    const bool may_backtrack = !constrained || iteration > 1;
+    if (settings_.line_search && may_backtrack && residual > base_residual && halvings < 8) {
+      // The full correction made things worse: take half of what was taken, from the base.
+      step_fraction *= 0.5;
+      ++halvings;
+      for (std::size_t i = 0; i < n; ++i)
+        a[i] = a_base[i] - step_fraction * correction_[i];
+      for (std::size_t i = 0; i < nc; ++i)
+        lambda_[i] = lambda_base[i] - step_fraction * mu_taken[i] / weight;
+      increment = beta * dt * dt * step_fraction * norm(correction_);
+      --iteration;
+      continue;
+    }
     residuals.push_back(residual);
 
     std::string failure;
@@ -274,6 +294,17 @@ void NewtonStepSolver::iterate(const StepState& state, double* a) {
         linear_factor_valid_ = linear;
       }
       system_.solve(residual_.data(), correction_.data());
+    }
+    if (settings_.line_search) {
+      a_base.assign(a, a + n);
+      lambda_base = lambda_;
+      if (constrained)  // the multipliers were moved by the solve above: take that back
+        for (std::size_t i = 0; i < nc; ++i)
+          lambda_base[i] += mu_[i] / weight;
+      mu_taken = mu_;
+      step_fraction = 1;
+      halvings = 0;
+      base_residual = residual;
     }
     for (std::size_t i = 0; i < n; ++i)
       a[i] -= correction_[i];

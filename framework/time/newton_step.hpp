@@ -40,6 +40,11 @@ struct NewtonSettings {
   double increment_relative = 1e-8;
   double increment_absolute = 1e-14;  ///< absolute floor of the increment test
   int max_iterations = 20;            ///< corrections allowed per step
+  /// Backtracking: where a full correction raises ‖R‖, halve it (up to 8 times) until ‖R‖
+  /// falls. For forces that saturate (creep forces, friction), where full Newton steps cycle.
+  /// With constraints the first correction is always taken whole: it moves the unknowns onto
+  /// the constraint rows, a change ‖R‖ does not see.
+  bool line_search = false;
 };
 
 /// A step whose Newton iteration did not converge (or met a non-finite residual).

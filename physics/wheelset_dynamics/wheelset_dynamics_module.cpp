@@ -29,6 +29,10 @@ ParameterSpec suspension_parameters() {
                   Range::non_negative());
   spec.real("Half spacing", 1.0, "Lateral distance of each axle box from the centre.", "m",
             Range::positive());
+  spec.real("Frame yaw", 0,
+            "Yaw of the running frame: the springs hold the wheelset at this angle of attack "
+            "(positive turns the axle's right end back, steering the right wheel into its rail).",
+            "rad", Range::closed(-0.1, 0.1));
   return spec;
 }
 
@@ -49,6 +53,18 @@ ParameterSpec contact_parameters() {
               "Tangential forces from the creepages.");
   spec.integer("FASTSIM cells", 10, "Cells per strip and strips.", Range::at_least(2));
   spec.only_when("Creep theory", {"fastsim"}, {"FASTSIM cells"});
+  spec.real("Curvature ratio limit", 10,
+            "Where wheel and rail are nearly conformal (the flange root), Hertz's smaller relative "
+            "curvature is raised to the larger / this ratio, keeping the ellipse within a/b of "
+            "about 1/5 to 5 (the creep-force table's range); such contacts are counted in the "
+            "summary. 0: stop the run there instead.",
+            "", Range::non_negative());
+  spec.flag("Lookup table", true,
+            "A rigid contact table over lateral shifts (±Table half range) predicts jumps between "
+            "tread and flange and starts the search there (the deeper contact wins).");
+  spec.real("Table half range", 0.02, "Lateral shifts the table covers.", "m",
+            Range::open_closed(0, 0.05));
+  spec.only_when("Lookup table", {"true"}, {"Table half range"});
   spec.choice("Yaw", "neglected",
               {{"neglected", "the contact search ignores yaw (the seed's choice)"},
                {"exact", "the search works on the yawed wheel's contact locus"}},
@@ -70,11 +86,22 @@ ParameterSpec wheelset_dynamics_parameters() {
   spec.real("Start", 0, "Position along the track at t = 0 (the irregularities' s).", "m");
   spec.required_real("End time", "Simulated duration.", "s", Range::positive());
   spec.required_real("Time step", "Δt.", "s", Range::positive());
-  spec.real("Alpha", 0.0,
-            "HHT alpha in [-1/3, 0] (beta = (1-alpha)^2/4, gamma = (1-2 alpha)/2; 0: the "
-            "average-acceleration rule, no numerical damping).",
+  spec.real("Alpha", -0.05,
+            "HHT alpha in [-1/3, 0] (beta = (1-alpha)^2/4, gamma = (1-2 alpha)/2). The default "
+            "damps the internal nodes' and the Hertz springs' highest modes, which the rails' "
+            "irregularities drive step to step; 0 (the average-acceleration rule, no numerical "
+            "damping) can leave Newton stalled there (docs/theory.md).",
             "", Range::closed(-1.0 / 3.0, 0));
   spec.integer("Newton iterations", 25, "Corrections allowed per step.", Range::at_least(1));
+  spec.real("Newton tolerance", 1e-6,
+            "Converged when the residual is below this fraction of the step's force scale and the "
+            "last correction below this fraction of the step's displacement. The creep forces "
+            "are known to about this (forward-difference tangent, the creep-force table's "
+            "interpolation, which is continuous but kinked between its a/b nodes).",
+            "", Range::closed(1e-12, 1e-3));
+  spec.flag("Line search", true,
+            "Halve a Newton correction that raises the residual (saturated creep forces make "
+            "full steps cycle); false: plain Newton.");
   spec.real("Initial lateral shift", 0, "Wheelset's lateral displacement at t = 0 (right).", "m");
   spec.real("Initial yaw", 0, "Wheelset's yaw at t = 0.", "rad");
   spec.real("Initial lateral velocity", 0, "Wheelset's lateral velocity at t = 0.", "m/s");
@@ -84,6 +111,10 @@ ParameterSpec wheelset_dynamics_parameters() {
   spec.text("Vertical irregularity", "",
             "Vertical offset of both rails (down positive) as a function of s (variable x) ('' = "
             "none).");
+  spec.text(
+      "Lateral force", "",
+      "Lateral force on the wheelset centre (N, to the right) as a function of time t (s), "
+      "e.g. '100e3*t/2' for a slow push ('' = none); the static balance is taken without it.");
   spec.real("History interval", 0, "Time between rows of the histories (0: every step).", "s",
             Range::non_negative());
   return spec;

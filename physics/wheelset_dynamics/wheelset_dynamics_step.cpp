@@ -41,6 +41,7 @@ WheelRailContactSettings contact_settings(const Teuchos::ParameterList& step) {
   settings.theory = creep_theory_from_name(c.get<std::string>("Creep theory"));
   settings.yaw_exact = c.get<std::string>("Yaw") == "exact";
   settings.fastsim_cells = c.get<int>("FASTSIM cells");
+  settings.curvature_ratio_limit = c.get<double>("Curvature ratio limit");
   return settings;
 }
 
@@ -67,6 +68,9 @@ void WheelsetDynamicsStep::check(const CheckContext& context) {
   geometry_ = read_profile_geometry(*parameters_, context);
   for (const char* key : {"Lateral irregularity", "Vertical irregularity"})
     track_function(*parameters_, key, context.source(), context.path);
+  const std::string force = parameters_->get<std::string>("Lateral force");
+  if (!force.empty())
+    Expression(force, context.source(), context.path + "/Lateral force");
   try {
     WheelRailContact(geometry_, TrackSide::right, false, contact_settings(*parameters_));
   } catch (const std::invalid_argument& error) {
@@ -86,9 +90,13 @@ void WheelsetDynamicsStep::run(StepContext& context) {
   const auto wall_start = std::chrono::steady_clock::now();
   const double V = p.get<double>("Speed");
   const auto& w = p.sublist("Wheelset");
-  WheelsetBody body{w.get<double>("Mass"),         w.get<double>("Roll inertia"),
-                    w.get<double>("Spin inertia"), w.get<double>("Yaw inertia"),
-                    w.get<double>("Axle load"),    w.get<double>("Gravity")};
+  WheelsetBody body;
+  body.mass = w.get<double>("Mass");
+  body.roll_inertia = w.get<double>("Roll inertia");
+  body.spin_inertia = w.get<double>("Spin inertia");
+  body.yaw_inertia = w.get<double>("Yaw inertia");
+  body.axle_load = w.get<double>("Axle load");
+  body.gravity = w.get<double>("Gravity");
   const auto& s = p.sublist("Suspension");
   AxleBoxSuspension suspension;
   const auto stiffness = s.get<Teuchos::Array<double>>("Stiffness");
@@ -98,7 +106,23 @@ void WheelsetDynamicsStep::run(StepContext& context) {
     suspension.damping[i] = damping[i];
   }
   suspension.half_spacing = s.get<double>("Half spacing");
+  suspension.frame_yaw = s.get<double>("Frame yaw");
+  const std::string force_text = p.get<std::string>("Lateral force");
+  if (!force_text.empty()) {
+    auto force =
+        std::make_shared<Expression>(force_text, context.source(), context.path + "/Lateral force");
+    body.lateral_force = [force](double t) { return (*force)(0, 0, 0, t); };
+  }
   WheelsetSystem system(geometry_, contact_settings(p), body, suspension, V, 0.0);
+  const auto& contact_list = p.sublist("Contact");
+  if (contact_list.get<bool>("Lookup table")) {
+    // Rows every 0.1 mm, as the wheelset-on-track scene's default table.
+    const double range = contact_list.get<double>("Table half range");
+    const auto rows = static_cast<int>(std::lround(2 * range / 1e-4)) + 1;
+    auto table = std::make_shared<const ContactTable>(*geometry_, range, rows);
+    for (int k = 0; k < n_wheelset_contacts; ++k)
+      system.contact(k).use_table(table);
+  }
   RigidRails rails(track_function(p, "Lateral irregularity", context.source(), context.path),
                    track_function(p, "Vertical irregularity", context.source(), context.path),
                    p.get<double>("Start"), V);
@@ -146,6 +170,8 @@ void WheelsetDynamicsStep::run(StepContext& context) {
   v[1] = p.get<double>("Initial lateral velocity");
   NewtonSettings newton;
   newton.max_iterations = p.get<int>("Newton iterations");
+  newton.line_search = p.get<bool>("Line search");
+  newton.residual_relative = newton.increment_relative = p.get<double>("Newton tolerance");
   NewtonStepSolver solver(system, newton);
   MonolithicSaddlePointSolver saddle(system);
   solver.constrain(&rails, &saddle);
@@ -203,7 +229,7 @@ void WheelsetDynamicsStep::run(StepContext& context) {
   OscillationMeter oscillation;
   oscillation.add(0, u[1] - offset[0]);
   double next_output = interval;
-  std::size_t n_events = 0;
+  std::size_t n_events = 0, n_conformal = 0;
   auto progress = context.progress("time steps", static_cast<double>(n_steps));
   double time = 0;
   for (long n = 0; n < n_steps; ++n) {
@@ -218,6 +244,11 @@ void WheelsetDynamicsStep::run(StepContext& context) {
     }
     time = (n + 1) * dt;
     states = system.contact_states(u.data(), v.data());
+    for (const ContactState& c : states)
+      if (c.active && c.conformal) {
+        ++n_conformal;
+        break;
+      }
     for (int k = 0; k < n_wheelset_contacts; ++k)
       if (states[k].active != active[k]) {
         active[k] = states[k].active;
@@ -251,6 +282,13 @@ void WheelsetDynamicsStep::run(StepContext& context) {
   context.summary.add(section, "most Newton iterations in a step",
                       static_cast<double>(statistics.most_iterations));
   context.summary.add(section, "contact events", static_cast<double>(n_events));
+  std::size_t jumps = 0;
+  for (int k = 0; k < n_wheelset_contacts; ++k)
+    jumps += system.contact(k).table_jumps();
+  context.summary.add(section, "contact points taken from the lookup table (jumps)",
+                      static_cast<double>(jumps));
+  context.summary.add(section, "steps with a conformal contact (curvature raised)",
+                      static_cast<double>(n_conformal));
   if (measure.cycles >= 1) {
     context.summary.add(section, "lateral wavelength", measure.period * V, "m");
     context.summary.add(section, "lateral growth per cycle", measure.growth_per_cycle);

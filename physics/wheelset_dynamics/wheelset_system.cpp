@@ -39,8 +39,10 @@ WheelsetSystem::WheelsetSystem(std::shared_ptr<const WheelRailGeometry> geometry
       body_(body),
       suspension_stiffness_(axle_box_matrix(suspension.stiffness, suspension.half_spacing)),
       suspension_damping_(axle_box_matrix(suspension.damping, suspension.half_spacing)),
+      rest_(Eigen::VectorXd::Zero(n_wheelset_unknowns)),
       speed_(speed),
       spin_(spin) {
+  rest_(5) = suspension.frame_yaw;
   for (int k = 0; k < n_wheelset_contacts; ++k)
     contacts_.emplace_back(geometry, kSides[k], kFlange[k], settings);
 }
@@ -63,7 +65,8 @@ ContactKinematics WheelsetSystem::kinematics(int index, const double* u, const d
 void WheelsetSystem::internal_force(const double* u, const double* v, double* force) {
   const Eigen::Index n = n_wheelset_unknowns;
   Eigen::Map<const Eigen::VectorXd> uu(u, n), vv(v, n);
-  Eigen::Map<Eigen::VectorXd>(force, n) = suspension_stiffness_ * uu + suspension_damping_ * vv;
+  Eigen::Map<Eigen::VectorXd>(force, n) =
+      suspension_stiffness_ * (uu - rest_) + suspension_damping_ * vv;
   for (int k = 0; k < n_wheelset_contacts; ++k) {
     const ContactKinematics state = kinematics(k, u, v);
     const ContactState c = contacts_[k].evaluate(state);
@@ -76,10 +79,12 @@ void WheelsetSystem::internal_force(const double* u, const double* v, double* fo
   }
 }
 
-void WheelsetSystem::external_force(double, double* force) {
+void WheelsetSystem::external_force(double time, double* force) {
   for (int i = 0; i < n_wheelset_unknowns; ++i)
     force[i] = 0;
   force[2] = body_.mass * body_.gravity + body_.axle_load;
+  if (body_.lateral_force)
+    force[1] = body_.lateral_force(time);
 }
 
 void WheelsetSystem::tangent(const double* u, const double* v, Eigen::MatrixXd& stiffness,

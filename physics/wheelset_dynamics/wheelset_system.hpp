@@ -25,6 +25,8 @@ struct WheelsetBody {
   double yaw_inertia = 800;   ///< about z (kg m²)
   double axle_load = 0;       ///< vertical force on the axle boxes besides its weight (N, down)
   double gravity = 9.81;      ///< g (m/s²)
+  /// Lateral force on the centre (N, to the right) against time; empty: none.
+  std::function<double(double)> lateral_force;
 };
 
 /// The springs and dampers of each of the two axle boxes to the running frame.
@@ -32,6 +34,7 @@ struct AxleBoxSuspension {
   std::array<double, 3> stiffness{};  ///< along x, y, z (N/m)
   std::array<double, 3> damping{};    ///< along x, y, z (N s/m)
   double half_spacing = 1.0;          ///< lateral distance of each box from the centre (m)
+  double frame_yaw = 0;  ///< yaw at which the springs are unstrained: an angle of attack (rad)
 };
 
 /// Index of the contact points: right tread, right flange, left tread, left flange.
@@ -50,7 +53,7 @@ class WheelsetSystem : public DenseSecondOrderSystem {
 
   /// Suspension forces plus the contacts' internal forces (each contact searched anew).
   void internal_force(const double* u, const double* v, double* force) override;
-  /// Weight and axle load, down.
+  /// Weight and axle load, down, and the lateral force.
   void external_force(double time, double* force) override;
   /// Suspension matrices plus each active contact's tangent.
   void tangent(const double* u, const double* v, Eigen::MatrixXd& stiffness,
@@ -78,6 +81,7 @@ class WheelsetSystem : public DenseSecondOrderSystem {
 
   WheelsetBody body_;
   Eigen::MatrixXd suspension_stiffness_, suspension_damping_;
+  Eigen::VectorXd rest_;  // the unknowns at which the springs are unstrained
   std::vector<WheelRailContact> contacts_;
   double speed_, spin_;
   bool rolling_ = true;
