@@ -88,6 +88,30 @@ void WheelRailContact::set_start(double s_wheel, double s_rail) {
   started_ = true;
 }
 
+void WheelRailContact::use_table(std::shared_ptr<const ContactTable> table) {
+  table_ = std::move(table);
+  search_ = SearchSettings{};
+  if (!table_)
+    return;
+  // The stretch of this part that the rigid wheelset touches over the table's shifts.
+  double least = 1e300, most = -1e300;
+  for (const RigidContact& row : table_->rows()) {
+    const ContactPoint& active = row.active(side_);
+    if (row.converged && active.valid() && active.flange == flange_) {
+      least = std::min(least, active.s_wheel);
+      most = std::max(most, active.s_wheel);
+    }
+  }
+  if (least > most)
+    return;  // the table never touches this part: search all of it
+  constexpr double margin = 1e-3;
+  const auto part = geometry_->part_range(side_, flange_);
+  if (part[0] == geometry_->flange_split(side_))
+    search_.first = least - margin;  // the root lies at the part's start
+  else
+    search_.last = most + margin;
+}
+
 WheelsetPose WheelRailContact::relative_pose(const ContactKinematics& state) const {
   WheelsetPose pose;
   pose.lateral = state.wheelset_u[1] - state.node_u[1];
@@ -140,13 +164,14 @@ CreepForces WheelRailContact::creep_forces(const HertzContact& hertz, const Cree
 ContactState WheelRailContact::evaluate(const ContactKinematics& state) {
   const WheelsetPose pose = relative_pose(state);
   if (!started_) {
-    const GapSample sample = least_gap_sample(*geometry_, side_, flange_, pose);
+    const GapSample sample = least_gap_sample(*geometry_, side_, flange_, pose, 200, search_);
     set_start(sample.s_wheel, sample.s_rail);
   }
-  ContactPoint point = search_contact(*geometry_, side_, flange_, pose, s_wheel_, s_rail_);
+  ContactPoint point = search_contact(*geometry_, side_, flange_, pose, s_wheel_, s_rail_, search_);
   if (point.status == SearchStatus::not_converged || point.status == SearchStatus::not_a_minimum) {
-    const GapSample sample = least_gap_sample(*geometry_, side_, flange_, pose);
-    point = search_contact(*geometry_, side_, flange_, pose, sample.s_wheel, sample.s_rail);
+    const GapSample sample = least_gap_sample(*geometry_, side_, flange_, pose, 200, search_);
+    point =
+        search_contact(*geometry_, side_, flange_, pose, sample.s_wheel, sample.s_rail, search_);
   }
   if (point.status == SearchStatus::not_converged) {
     std::ostringstream message;
@@ -159,7 +184,7 @@ ContactState WheelRailContact::evaluate(const ContactKinematics& state) {
     const auto start = table_->start(side_, flange_, pose.lateral);
     if (std::abs(start[0] - s_wheel_) > 1e-3) {
       const ContactPoint other =
-          search_contact(*geometry_, side_, flange_, pose, start[0], start[1]);
+          search_contact(*geometry_, side_, flange_, pose, start[0], start[1], search_);
       const bool better = other.status == SearchStatus::converged &&
                           (point.status != SearchStatus::converged || other.gap < point.gap);
       if (better) {
@@ -167,6 +192,14 @@ ContactState WheelRailContact::evaluate(const ContactKinematics& state) {
         ++table_jumps_;
       }
     }
+  }
+  // A penetration at the narrowed stretch's edge (not the part's own end, where the other part
+  // takes over) is a contact pinned there: it must not pass unseen.
+  const bool at_edge = std::abs(point.s_wheel - search_.first) < 1e-12 ||
+                       std::abs(point.s_wheel - search_.last) < 1e-12;
+  if (point.status == SearchStatus::part_boundary && point.gap < 0 && at_edge) {
+    point.status = SearchStatus::converged;
+    ++edge_contacts_;
   }
   if (point.status == SearchStatus::converged)
     set_start(point.s_wheel, point.s_rail);
@@ -280,7 +313,8 @@ void WheelRailContact::tangent(const ContactKinematics& state, const ContactStat
       if (pass == 0) {
         // A moved position needs its own contact point, searched from the one at the base.
         const double s_wheel = at.point.s_wheel, s_rail = at.point.s_rail;
-        point = search_contact(*geometry_, side_, flange_, relative_pose(moved), s_wheel, s_rail);
+        point = search_contact(*geometry_, side_, flange_, relative_pose(moved), s_wheel, s_rail,
+                               search_);
         // The derivative is that of this contact: a search that fails or lands on another
         // minimum (a step of 1e-8 cannot move the point by 0.1 mm) keeps the base point.
         if (point.status != SearchStatus::converged || std::abs(point.s_wheel - s_wheel) > 1e-4)

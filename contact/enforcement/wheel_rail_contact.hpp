@@ -107,8 +107,11 @@ class WheelRailContact {
   void set_start(double s_wheel, double s_rail);
   /// Uses \p table (shared; null: none) to predict jumps: where the table's start for the
   /// relative lateral shift lies more than 1 mm of wheel profile from the last point found,
-  /// the part is searched from both and the deeper contact is taken.
-  void use_table(std::shared_ptr<const ContactTable> table) { table_ = std::move(table); }
+  /// the part is searched from both and the deeper contact is taken. The part is also searched
+  /// only up to 1 mm beyond the table's contacts on its flange-root side (docs/theory.md).
+  void use_table(std::shared_ptr<const ContactTable> table);
+  /// Evaluations whose contact sat on the edge of the searched stretch, penetrating.
+  std::size_t edge_contacts() const { return edge_contacts_; }
   /// Evaluations where the table's start gave the contact (a predicted jump).
   std::size_t table_jumps() const { return table_jumps_; }
   /// "right tread", "left flange", ...
@@ -134,7 +137,8 @@ class WheelRailContact {
   WheelRailContactSettings settings_;
   double modulus_ = 0, shear_modulus_ = 0, poisson_ = 0;
   std::shared_ptr<const ContactTable> table_;
-  std::size_t table_jumps_ = 0;
+  std::size_t table_jumps_ = 0, edge_contacts_ = 0;
+  SearchSettings search_;  // the stretch searched
   bool started_ = false;
   double s_wheel_ = 0, s_rail_ = 0;
 };

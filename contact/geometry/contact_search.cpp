@@ -89,10 +89,17 @@ std::string status_name(SearchStatus status) {
   return "?";
 }
 
+std::array<double, 2> searched_range(const WheelRailGeometry& geometry, TrackSide side, bool flange,
+                                     const SearchSettings& settings) {
+  const auto part = geometry.part_range(side, flange);
+  const double first = std::max(part[0], settings.first), last = std::min(part[1], settings.last);
+  return first < last ? std::array<double, 2>{first, last} : part;
+}
+
 ContactPoint search_contact(const WheelRailGeometry& geometry, TrackSide side, bool flange,
                             const WheelsetPose& pose, double s_wheel, double s_rail,
                             const SearchSettings& settings) {
-  const auto range = geometry.part_range(side, flange);
+  const auto range = searched_range(geometry, side, flange, settings);
   Evaluation e = evaluate(geometry, side, pose, std::clamp(s_wheel, range[0], range[1]), s_rail);
   double radius = settings.trust_radius;
   bool converged = false, blocked = false;
@@ -173,8 +180,8 @@ ContactPoint search_contact(const WheelRailGeometry& geometry, TrackSide side, b
 }
 
 GapSample least_gap_sample(const WheelRailGeometry& geometry, TrackSide side, bool flange,
-                           const WheelsetPose& pose, int samples) {
-  const auto range = geometry.part_range(side, flange);
+                           const WheelsetPose& pose, int samples, const SearchSettings& settings) {
+  const auto range = searched_range(geometry, side, flange, settings);
   const ProfileCurve& rail = geometry.rail(side);
   // The first wheel point's foot starts from the nearest of a few rail points; each later one
   // from its neighbour's foot.

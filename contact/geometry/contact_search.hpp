@@ -9,6 +9,7 @@
 /// contact well posed (docs/theory.md). Tread and flange are searched separately, so a wheel can
 /// touch at two points.
 
+#include <array>
 #include <string>
 
 #include "contact/geometry/wheel_rail_geometry.hpp"
@@ -32,7 +33,17 @@ struct SearchSettings {
   double tolerance = 1e-12;      ///< converged when the Newton correction is below this (m)
   double trust_radius = 2e-3;    ///< initial trust-region radius in the wheel parameter (m)
   bool use_trust_region = true;  ///< false: plain Newton (clipped to the part)
+  /// The stretch of the part searched, in wheel parameter (default: the whole part). A
+  /// contact element narrows it to where the rigid contact table found contacts, so that the
+  /// conformal flange root a new profile never touches rigidly is not searched.
+  double first = -1e300;
+  double last = 1e300;  ///< end of the stretch searched
 };
+
+/// The wheel parameter range of \p side's tread or (\p flange) flange part, narrowed to
+/// [settings.first, settings.last] (the part itself where they do not overlap it).
+std::array<double, 2> searched_range(const WheelRailGeometry& geometry, TrackSide side, bool flange,
+                                     const SearchSettings& settings);
 
 /// A wheel-rail contact point.
 struct ContactPoint {
@@ -79,6 +90,7 @@ struct GapSample {
 /// flange of \p side in \p pose: a start for \p search_contact found without a table, and the
 /// check that a converged search found the part's lowest minimum.
 GapSample least_gap_sample(const WheelRailGeometry& geometry, TrackSide side, bool flange,
-                           const WheelsetPose& pose, int samples = 200);
+                           const WheelsetPose& pose, int samples = 200,
+                           const SearchSettings& settings = {});
 
 }  // namespace railfe

@@ -282,9 +282,13 @@ void WheelsetDynamicsStep::run(StepContext& context) {
   context.summary.add(section, "most Newton iterations in a step",
                       static_cast<double>(statistics.most_iterations));
   context.summary.add(section, "contact events", static_cast<double>(n_events));
-  std::size_t jumps = 0;
-  for (int k = 0; k < n_wheelset_contacts; ++k)
+  std::size_t jumps = 0, edges = 0;
+  for (int k = 0; k < n_wheelset_contacts; ++k) {
     jumps += system.contact(k).table_jumps();
+    edges += system.contact(k).edge_contacts();
+  }
+  context.summary.add(section, "contact evaluations pinned to the searched stretch's edge",
+                      static_cast<double>(edges));
   context.summary.add(section, "contact points taken from the lookup table (jumps)",
                       static_cast<double>(jumps));
   context.summary.add(section, "steps with a conformal contact (curvature raised)",
