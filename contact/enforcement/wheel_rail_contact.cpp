@@ -64,6 +64,7 @@ WheelRailContact::WheelRailContact(std::shared_ptr<const WheelRailGeometry> geom
                                    TrackSide side, bool flange,
                                    const WheelRailContactSettings& settings)
     : geometry_(std::move(geometry)), side_(side), flange_(flange), settings_(settings) {
+  search_.use_trust_region = settings.trust_region;
   modulus_ = contact_modulus(settings.wheel, settings.rail);
   // Combined constants of two bodies (Kalker): 2/G = 1/G1 + 1/G2, ν/G = (ν1/G1 + ν2/G2)/2.
   const double g1 = settings.wheel.young / (2 * (1 + settings.wheel.poisson));
@@ -90,7 +91,8 @@ void WheelRailContact::set_start(double s_wheel, double s_rail) {
 
 void WheelRailContact::use_table(std::shared_ptr<const ContactTable> table) {
   table_ = std::move(table);
-  search_ = SearchSettings{};
+  search_.first = -1e300;
+  search_.last = 1e300;
   if (!table_)
     return;
   // The stretch of this part that the rigid wheelset touches over the table's shifts.
@@ -326,6 +328,42 @@ void WheelRailContact::tangent(const ContactKinematics& state, const ContactStat
         matrix[i * 9 + j] = (shifted[i] - base[i]) / step;
     }
   }
+  if (settings_.kalker_damping && at.active && state.speed > 0)
+    kalker_damping_matrix(state, at, damping);
+}
+
+void WheelRailContact::kalker_damping_matrix(const ContactKinematics& state, const ContactState& at,
+                                             double* damping) const {
+  const Vec3 n{0, at.point.normal.y, at.point.normal.z};
+  const Vec3 t{0, at.point.normal.z, -at.point.normal.y};
+  const Vec3 x{1, 0, 0}, ez{0, 0, 1};
+  const Vec3 axle = axle_direction(state.wheelset_u[3], state.wheelset_u[5]);
+  const Vec3& r = at.position;
+  // J: the rates of (Δv·x, Δv·t, ω·n) per unknown rate (wheelset 6, node 3).
+  double J[3][9] = {};
+  const Vec3 directions[2] = {x, t};
+  const Vec3 swept[3] = {cross(x, r), cross(axle, r), cross(ez, r)};
+  for (int row = 0; row < 2; ++row) {
+    for (int i = 0; i < 3; ++i) {
+      J[row][i] = directions[row][i];
+      J[row][6 + i] = -directions[row][i];
+      J[row][3 + i] = dot(swept[i], directions[row]);
+    }
+  }
+  J[2][3] = dot(x, n);
+  J[2][4] = dot(axle, n);
+  J[2][5] = dot(ez, n);
+  const KalkerCoefficients c = KalkerTable::shipped().at(at.hertz.a, at.hertz.b, poisson_);
+  const auto D = kalker_damping(c, shear_modulus_, at.hertz.a, at.hertz.b, state.speed);
+  // f_int = −Jᵀ F and F = −D J v (+ constants), so C = Jᵀ D J.
+  for (int i = 0; i < 9; ++i)
+    for (int j = 0; j < 9; ++j) {
+      double sum = 0;
+      for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l)
+          sum += J[k][i] * D[k * 3 + l] * J[l][j];
+      damping[i * 9 + j] = sum;
+    }
 }
 
 }  // namespace railfe

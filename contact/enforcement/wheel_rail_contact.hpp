@@ -56,6 +56,11 @@ struct WheelRailContactSettings {
   /// kept to within this ratio of each other by raising the smaller one, so the ellipse stays
   /// within a/b ≈ 1/5..5; 0 refuses such a contact instead (RunError).
   double curvature_ratio_limit = 10;
+  bool trust_region = true;  ///< the contact search's trust region (false: plain Newton)
+  /// The creep forces' share of the tangent damping: false, forward differences of the theory
+  /// (consistent); true, Kalker's linear damping matrix Jᵀ D J at the current ellipse, as the
+  /// seed model does (exact for the linear theory, an approximation for saturating ones).
+  bool kalker_damping = false;
 };
 
 /// The kinematic state the element sees: the wheelset's and one internal node's.
@@ -128,6 +133,9 @@ class WheelRailContact {
   /// computed afresh, or (\p shape given, for the tangent) scaled from \p shape to the approach.
   ContactState forces_at(const ContactKinematics& state, const ContactPoint& point,
                          const HertzContact* shape) const;
+  /// Jᵀ D J of Kalker's linear theory at \p at (9 × 9, row-major) into \p damping.
+  void kalker_damping_matrix(const ContactKinematics& state, const ContactState& at,
+                             double* damping) const;
   /// Creep forces of \p theory for \p hertz and \p creep.
   CreepForces creep_forces(const HertzContact& hertz, const Creepages& creep, double speed) const;
 

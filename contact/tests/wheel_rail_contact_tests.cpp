@@ -136,6 +136,30 @@ TEST(WheelRailContact, TangentMatchesCentralDifferences) {
   }
 }
 
+TEST(WheelRailContact, KalkerDampingIsTheLinearTheorysConsistentTangent) {
+  // For Kalker's linear theory the creep forces are −D J v, so Jᵀ D J (the seed's constant
+  // damping) must equal the forward-difference damping of the same theory.
+  WheelRailContactSettings consistent, seed;
+  seed.kalker_damping = true;
+  WheelRailContact a(cone_on_crown(), TrackSide::right, false, consistent);
+  WheelRailContact b(cone_on_crown(), TrackSide::right, false, seed);
+  ContactKinematics state = rolling_state();
+  state.wheelset_u[3] = 1e-3;
+  const ContactState at = a.evaluate(state);
+  ASSERT_TRUE(at.active);
+  b.evaluate(state);
+  double ka[81], ca[81], kb[81], cb[81];
+  a.tangent(state, at, ka, ca);
+  b.tangent(state, at, kb, cb);
+  double scale = 0;
+  for (double v : ca)
+    scale = std::max(scale, std::abs(v));
+  for (int i = 0; i < 81; ++i) {
+    EXPECT_NEAR(cb[i], ca[i], 1e-6 * scale) << "entry " << i;
+    EXPECT_EQ(kb[i], ka[i]);
+  }
+}
+
 TEST(WheelRailContact, NearlyConformalCurvaturesAreRaisedToTheRatioLimit) {
   // A concave tread of radius 0.31 m on the 0.3 m crown: B = (1/0.3 − 1/0.31)/2 = 0.054 /m
   // against A = 1/(2 r) ≈ 1.09 /m, a ratio of 20. The limit 10 raises B to A/10; without a limit

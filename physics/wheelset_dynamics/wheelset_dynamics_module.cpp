@@ -65,6 +65,16 @@ ParameterSpec contact_parameters() {
   spec.real("Table half range", 0.02, "Lateral shifts the table covers.", "m",
             Range::open_closed(0, 0.05));
   spec.only_when("Lookup table", {"true"}, {"Table half range"});
+  spec.choice("Creep tangent", "consistent",
+              {{"consistent", "forward differences of the creep theory (Newton's own tangent)"},
+               {"Kalker damping",
+                "Kalker's linear damping matrix at the current ellipse, as the seed model does "
+                "(exact for the linear theory)"}},
+              "The creep forces' share of Newton's matrix (the residual is the same).");
+  spec.choice("Search", "trust-region",
+              {{"trust-region", "Newton on the wheel parameter within a trust region"},
+               {"plain Newton", "full Newton steps, clipped to the part (for comparison)"}},
+              "The contact-point search (contact/geometry/contact_search.hpp).");
   spec.choice("Yaw", "neglected",
               {{"neglected", "the contact search ignores yaw (the seed's choice)"},
                {"exact", "the search works on the yawed wheel's contact locus"}},

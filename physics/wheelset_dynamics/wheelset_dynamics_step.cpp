@@ -42,6 +42,8 @@ WheelRailContactSettings contact_settings(const Teuchos::ParameterList& step) {
   settings.yaw_exact = c.get<std::string>("Yaw") == "exact";
   settings.fastsim_cells = c.get<int>("FASTSIM cells");
   settings.curvature_ratio_limit = c.get<double>("Curvature ratio limit");
+  settings.trust_region = c.get<std::string>("Search") == "trust-region";
+  settings.kalker_damping = c.get<std::string>("Creep tangent") == "Kalker damping";
   return settings;
 }
 
