@@ -30,15 +30,47 @@ double curvature_ratio(double g) {
   return f.E / (g * g * f.K_minus_E_over_e2) - 1;
 }
 
-// Axis ratio g (short / long) for a curvature ratio r >= 1, by bisection in log g (the ratio is
-// monotonic in g).
+// Axis ratio g (short / long) for a curvature ratio r >= 1: the root in x = log g of
+// curvature_ratio(e^x) = r, which falls monotonically in x. Bracketed around the classical
+// estimate g ≈ r^(-2/3), then false position with the Illinois modification (superlinear, about
+// ten evaluations instead of bisection's fifty) down to the same 1e-15 in x.
 double axis_ratio(double r) {
   if (r <= 1)
     return 1;
-  double lo = std::log(1e-12), hi = 0;
+  auto f = [r](double x) { return curvature_ratio(std::exp(x)) - r; };
+  const double floor = std::log(1e-12);
+  const double guess = std::max(-2.0 / 3.0 * std::log(r), floor);
+  double lo = std::max(guess - 0.25, floor), hi = std::min(guess + 0.25, 0.0);
+  double f_lo = f(lo), f_hi = hi < 0 ? f(hi) : 1 - r;
+  while (f_lo < 0 && lo > floor) {  // widen until f(lo) > 0 > f(hi)
+    hi = lo, f_hi = f_lo;
+    lo = std::max(lo - 1, floor);
+    f_lo = f(lo);
+  }
+  while (f_hi > 0 && hi < 0) {
+    lo = hi, f_lo = f_hi;
+    hi = std::min(hi + 1, 0.0);
+    f_hi = hi < 0 ? f(hi) : 1 - r;
+  }
+  int side = 0;
   for (int i = 0; i < 200 && hi - lo > 1e-15; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (curvature_ratio(std::exp(mid)) > r ? lo : hi) = mid;
+    double x = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+    if (!(x > lo && x < hi))
+      x = 0.5 * (lo + hi);
+    const double fx = f(x);
+    if (fx > 0) {
+      lo = x, f_lo = fx;
+      if (side == -1)
+        f_hi *= 0.5;
+      side = -1;
+    } else {
+      hi = x, f_hi = fx;
+      if (side == 1)
+        f_lo *= 0.5;
+      side = 1;
+    }
+    if (fx == 0)
+      return std::exp(x);
   }
   return std::exp(0.5 * (lo + hi));
 }
@@ -78,9 +110,17 @@ HertzContact hertz_contact(double A, double B, double modulus, double load) {
 HertzContact hertz_from_approach(double A, double B, double modulus, double approach) {
   if (!(approach > 0))
     throw std::invalid_argument("Hertz needs a positive approach");
-  // Stiffness does not depend on the load: find it at a unit load.
+  // Stiffness does not depend on the load: find it at a unit load. The ellipse keeps its shape,
+  // its semi-axes growing as N^(1/3), so the unit contact scales to the load.
   const HertzContact unit = hertz_contact(A, B, modulus, 1.0);
-  return hertz_contact(A, B, modulus, unit.stiffness * std::pow(approach, 1.5));
+  const double load = unit.stiffness * std::pow(approach, 1.5), scale = std::cbrt(load);
+  HertzContact c = unit;
+  c.load = load;
+  c.a = unit.a * scale;
+  c.b = unit.b * scale;
+  c.pressure = 3 * load / (2 * M_PI * c.a * c.b);
+  c.approach = approach;
+  return c;
 }
 
 HertzContact hertz_from_semi_axes(double a, double b, double modulus, double load) {

@@ -1,5 +1,6 @@
 #include "physics/wheelset_dynamics/wheelset_system.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace railfe {
@@ -62,14 +63,29 @@ ContactKinematics WheelsetSystem::kinematics(int index, const double* u, const d
   return state;
 }
 
+const std::array<ContactState, n_wheelset_contacts>& WheelsetSystem::states_at(const double* u,
+                                                                               const double* v) {
+  const std::size_t n = n_wheelset_unknowns;
+  const bool same = cached_u_.size() == n && std::equal(u, u + n, cached_u_.begin()) &&
+                    std::equal(v, v + n, cached_v_.begin());
+  if (!same) {
+    for (int k = 0; k < n_wheelset_contacts; ++k)
+      cached_states_[k] = contacts_[k].evaluate(kinematics(k, u, v));
+    cached_u_.assign(u, u + n);
+    cached_v_.assign(v, v + n);
+  }
+  return cached_states_;
+}
+
 void WheelsetSystem::internal_force(const double* u, const double* v, double* force) {
   const Eigen::Index n = n_wheelset_unknowns;
   Eigen::Map<const Eigen::VectorXd> uu(u, n), vv(v, n);
   Eigen::Map<Eigen::VectorXd>(force, n) =
       suspension_stiffness_ * (uu - rest_) + suspension_damping_ * vv;
+  const auto& states = states_at(u, v);
   for (int k = 0; k < n_wheelset_contacts; ++k) {
     const ContactKinematics state = kinematics(k, u, v);
-    const ContactState c = contacts_[k].evaluate(state);
+    const ContactState& c = states[k];
     double wheelset[6], node[3];
     WheelRailContact::internal_forces(c, state, wheelset, node);
     for (int i = 0; i < 6; ++i)
@@ -91,9 +107,10 @@ void WheelsetSystem::tangent(const double* u, const double* v, Eigen::MatrixXd& 
                              Eigen::MatrixXd& damping) {
   stiffness = suspension_stiffness_;
   damping = suspension_damping_;
+  const auto& states = states_at(u, v);
   for (int k = 0; k < n_wheelset_contacts; ++k) {
     const ContactKinematics state = kinematics(k, u, v);
-    const ContactState c = contacts_[k].evaluate(state);
+    const ContactState& c = states[k];
     if (!c.active)
       continue;
     double kt[81], ct[81];
@@ -119,10 +136,7 @@ void WheelsetSystem::solve(const double*, double*) {
 
 std::array<ContactState, n_wheelset_contacts> WheelsetSystem::contact_states(const double* u,
                                                                              const double* v) {
-  std::array<ContactState, n_wheelset_contacts> states;
-  for (int k = 0; k < n_wheelset_contacts; ++k)
-    states[k] = contacts_[k].evaluate(kinematics(k, u, v));
-  return states;
+  return states_at(u, v);
 }
 
 RigidRails::RigidRails(std::function<double(double)> lateral,

@@ -71,12 +71,22 @@ class WheelsetSystem : public DenseSecondOrderSystem {
   /// Rolling speed V (m/s).
   double speed() const { return speed_; }
   /// Sets the nominal spin Ω about the axle (rad/s).
-  void set_spin(double spin) { spin_ = spin; }
+  void set_spin(double spin) {
+    spin_ = spin;
+    cached_u_.clear();
+  }
   /// Switches the creep forces off (\p rolling false: the static balance) or on.
-  void set_rolling(bool rolling) { rolling_ = rolling; }
+  void set_rolling(bool rolling) {
+    rolling_ = rolling;
+    cached_u_.clear();
+  }
 
  private:
   ContactKinematics kinematics(int index, const double* u, const double* v) const;
+  /// The contact states at (u, v): those of the last evaluation when (u, v) are the same and
+  /// neither spin nor rolling changed since (Newton asks for forces and tangent at one iterate),
+  /// else searched anew.
+  const std::array<ContactState, n_wheelset_contacts>& states_at(const double* u, const double* v);
   static Eigen::MatrixXd mass_matrix(const WheelsetBody& body);
 
   WheelsetBody body_;
@@ -85,6 +95,8 @@ class WheelsetSystem : public DenseSecondOrderSystem {
   std::vector<WheelRailContact> contacts_;
   double speed_, spin_;
   bool rolling_ = true;
+  std::vector<double> cached_u_, cached_v_;  // the iterate of cached_states_
+  std::array<ContactState, n_wheelset_contacts> cached_states_;
 };
 
 /// The rails as rigid lines with irregularities: each internal node's (x, y, z) equals the rail's
