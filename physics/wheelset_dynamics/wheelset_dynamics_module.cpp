@@ -125,6 +125,9 @@ ParameterSpec wheelset_dynamics_parameters() {
       "Lateral force", "",
       "Lateral force on the wheelset centre (N, to the right) as a function of time t (s), "
       "e.g. '100e3*t/2' for a slow push ('' = none); the static balance is taken without it.");
+  spec.flag("Chart", true,
+            "Draw <step>_chart.png (shift, yaw, wheel forces and Y/Q against time) from the "
+            "histories.");
   spec.real("History interval", 0, "Time between rows of the histories (0: every step).", "s",
             Range::non_negative());
   return spec;

@@ -10,6 +10,7 @@
 #include "framework/solvers/saddle_point_solvers.hpp"
 #include "framework/time/newmark.hpp"
 #include "framework/time/newton_step.hpp"
+#include "physics/common/chart_script.hpp"
 #include "physics/common/profile_geometry.hpp"
 #include "physics/wheelset_dynamics/wheelset_balance.hpp"
 #include "physics/wheelset_dynamics/wheelset_oscillation.hpp"
@@ -277,6 +278,13 @@ void WheelsetDynamicsStep::run(StepContext& context) {
         {"lateral", CsvWriter::format(measure.period), CsvWriter::format(measure.period * V),
          CsvWriter::format(measure.amplitude), CsvWriter::format(measure.growth_per_cycle),
          std::to_string(measure.cycles)});
+  history.flush();
+  contacts.flush();
+  if (p.get<bool>("Chart"))
+    draw_chart(context, section, "wheelset_dynamics_chart.py",
+               {context.output.staging_path(context.step_name + "_wheelset.csv"),
+                context.output.staging_path(context.step_name + "_contacts.csv"),
+                context.output.staging_path(context.step_name + "_chart.png")});
   const NewtonStatistics& statistics = solver.statistics();
   context.summary.add(section, "steps", static_cast<double>(statistics.steps));
   context.summary.add(section, "Newton iterations per step",
