@@ -45,6 +45,7 @@ DECK = """<ParameterList name="railfe">
                  value="{amplitude}*(1-cos(2*_pi*(x-6)/12))/2*(x&gt;6)*(x&lt;18)"/>
       <Parameter name="End time" type="double" value="{end}"/>
       <Parameter name="Time step" type="double" value="0.001"/>
+      <Parameter name="Chart" type="bool" value="false"/>
       <Parameter name="History interval" type="double" value="0"/>
     </ParameterList>
   </ParameterList>

@@ -42,6 +42,7 @@ DECK = """<ParameterList name="railfe">
                  value="0.004*(1-cos(2*_pi*(x-6)/12))/2*(x&gt;6)*(x&lt;18)"/>
       <Parameter name="End time" type="double" value="1.0"/>
       <Parameter name="Time step" type="double" value="{step}"/>
+      <Parameter name="Chart" type="bool" value="false"/>
       <Parameter name="History interval" type="double" value="0"/>
     </ParameterList>
   </ParameterList>

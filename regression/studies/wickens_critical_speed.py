@@ -144,6 +144,7 @@ DECK = """<ParameterList name="railfe">
       <Parameter name="Initial lateral shift" type="double" value="0.001"/>
       <Parameter name="End time" type="double" value="{end}"/>
       <Parameter name="Time step" type="double" value="{step}"/>
+      <Parameter name="Chart" type="bool" value="false"/>
       <Parameter name="History interval" type="double" value="0.01"/>
     </ParameterList>
   </ParameterList>
