@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""Where the implicit wheel-rail contact fails: an S1002 wheelset on 60E1 (as in
-wheelset_speed_accuracy.py) runs over a 12 m cosine lateral irregularity of both rails, for a
+"""Where the implicit wheel-rail contact fails: an S1002 wheelset on 60E1 (the deck of
+wheelset_speed_accuracy.py, creep-force table) runs over a 12 m cosine lateral irregularity of both rails, for a
 grid of speeds and amplitudes, with four settings of the method:
   default       lookup table (jump prediction, narrowed search), trust-region search,
                 Newton with line search
@@ -20,37 +20,11 @@ import os
 import subprocess
 import tempfile
 
+from wheelset_speed_accuracy import deck as study_deck
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 
-DECK = """<ParameterList name="railfe">
-  <ParameterList name="Steps">
-    <ParameterList name="run">
-      <Parameter name="Module" type="string" value="wheelset dynamics"/>
-      <ParameterList name="Wheelset">
-        <Parameter name="Axle load" type="double" value="100e3"/>
-      </ParameterList>
-      <ParameterList name="Suspension">
-        <Parameter name="Stiffness" type="Array(double)" value="{{10e6, 5e6, 0}}"/>
-        <Parameter name="Damping" type="Array(double)" value="{{0, 20e3, 0}}"/>
-        <Parameter name="Half spacing" type="double" value="1.0"/>
-      </ParameterList>
-      <ParameterList name="Contact">
-        <Parameter name="Lookup table" type="bool" value="{table}"/>
-        <Parameter name="Search" type="string" value="{search}"/>
-      </ParameterList>
-      <Parameter name="Line search" type="bool" value="{line_search}"/>
-      <Parameter name="Speed" type="double" value="{speed}"/>
-      <Parameter name="Lateral irregularity" type="string"
-                 value="{amplitude}*(1-cos(2*_pi*(x-6)/12))/2*(x&gt;6)*(x&lt;18)"/>
-      <Parameter name="End time" type="double" value="{end}"/>
-      <Parameter name="Time step" type="double" value="0.001"/>
-      <Parameter name="Chart" type="bool" value="false"/>
-      <Parameter name="History interval" type="double" value="0"/>
-    </ParameterList>
-  </ParameterList>
-</ParameterList>
-"""
 
 SETTINGS = {
     "default": dict(table="true", search="trust-region", line_search="true"),
@@ -64,8 +38,8 @@ def run(railfe, work, setting, speed, amplitude):
     name = "%s_%g_%g" % (setting.replace(" ", "_"), speed, amplitude)
     deck = os.path.join(work, name + ".xml")
     with open(deck, "w") as f:
-        f.write(DECK.format(speed=speed, amplitude=amplitude, end=30.0 / speed,
-                            **SETTINGS[setting]))
+        f.write(study_deck(speed=speed, amplitude=amplitude, end=30.0 / speed,
+                           **SETTINGS[setting]))
     out = os.path.join(work, name)
     done = subprocess.run([railfe, deck, "--output", out, "--quiet"], capture_output=True,
                           text=True)

@@ -35,12 +35,15 @@ DECK = """<ParameterList name="railfe">
       <ParameterList name="Contact">
         <Parameter name="Creep theory" type="string" value="{theory}"/>
         <Parameter name="Yaw" type="string" value="{yaw}"/>
+        <Parameter name="Lookup table" type="bool" value="{table}"/>
+        <Parameter name="Search" type="string" value="{search}"/>
       </ParameterList>
+      <Parameter name="Line search" type="bool" value="{line_search}"/>
       <Parameter name="Alpha" type="double" value="-0.05"/>
-      <Parameter name="Speed" type="double" value="30"/>
+      <Parameter name="Speed" type="double" value="{speed}"/>
       <Parameter name="Lateral irregularity" type="string"
-                 value="0.004*(1-cos(2*_pi*(x-6)/12))/2*(x&gt;6)*(x&lt;18)"/>
-      <Parameter name="End time" type="double" value="1.0"/>
+                 value="{amplitude}*(1-cos(2*_pi*(x-6)/12))/2*(x&gt;6)*(x&lt;18)"/>
+      <Parameter name="End time" type="double" value="{end}"/>
       <Parameter name="Time step" type="double" value="{step}"/>
       <Parameter name="Chart" type="bool" value="false"/>
       <Parameter name="History interval" type="double" value="0"/>
@@ -50,11 +53,18 @@ DECK = """<ParameterList name="railfe">
 """
 
 
+def deck(theory="table", yaw="neglected", step=0.001, speed=30, amplitude=0.004, end=1.0,
+         table="true", search="trust-region", line_search="true"):
+    """The study's deck (also wheelset_newton_map.py's) with the settings given."""
+    return DECK.format(theory=theory, yaw=yaw, step=step, speed=speed, amplitude=amplitude,
+                       end=end, table=table, search=search, line_search=line_search)
+
+
 def run(railfe, work, theory, yaw, step):
     name = "%s_%s_%g" % (theory, yaw, step)
     deck = os.path.join(work, name + ".xml")
     with open(deck, "w") as f:
-        f.write(DECK.format(theory=theory, yaw=yaw, step=step))
+        f.write(deck(theory, yaw, step))
     out = os.path.join(work, name)
     subprocess.run([railfe, deck, "--output", out, "--quiet"], check=True)
     summary = json.load(open(os.path.join(out, "summary.json")))
