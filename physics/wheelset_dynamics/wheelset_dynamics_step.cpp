@@ -1,7 +1,9 @@
 #include "physics/wheelset_dynamics/wheelset_dynamics_step.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iostream>
 #include <sstream>
 
 #include "framework/base/error.hpp"
@@ -234,7 +236,7 @@ void WheelsetDynamicsStep::run(StepContext& context) {
   double next_output = interval;
   std::size_t n_events = 0, n_conformal = 0;
   auto progress = context.progress("time steps", static_cast<double>(n_steps));
-  double time = 0;
+  double time = 0, airborne_since = 1e300;
   for (long n = 0; n < n_steps; ++n) {
     try {
       integrator.step(time, dt, solver, u.data(), v.data(), a.data());
@@ -261,11 +263,26 @@ void WheelsetDynamicsStep::run(StepContext& context) {
                           CsvWriter::format(states[k].hertz.load)});
       }
     oscillation.add(time, u[1] - rails.offsets(time)[0]);
-    if (time >= next_output - 1e-9 * dt || n + 1 == n_steps) {
+    // Both wheels in the air for 50 ms: the wheelset has left the rails (a climb or a jump
+    // over), after which nothing it computes means anything. The run ends there, reported.
+    const bool airborne = std::none_of(active.begin(), active.end(), [](bool a) { return a; });
+    airborne_since = airborne ? std::min(airborne_since, time) : 1e300;
+    const bool derailed = time - airborne_since >= 0.05 - 1e-9 * dt;
+    if (time >= next_output - 1e-9 * dt || n + 1 == n_steps || derailed) {
       write_rows(time, solver.statistics().last_iterations);
       next_output += interval;
     }
     progress.update(static_cast<double>(n + 1));
+    if (derailed) {
+      events.write_row(
+          {CsvWriter::format(time), "wheelset", "off the rails (no contact for 50 ms)", "0"});
+      context.summary.add(section, "left the rails at", airborne_since, "s");
+      if (root)
+        std::cerr << "warning: " << context.path
+                  << ": the wheelset left the rails at t = " << airborne_since
+                  << " s (no wheel touching for 50 ms); the run ends at t = " << time << " s\n";
+      break;
+    }
   }
   progress.finish();
 
