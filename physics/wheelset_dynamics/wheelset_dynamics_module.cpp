@@ -18,6 +18,10 @@ ParameterSpec wheelset_parameters() {
             "and car body).",
             "N", Range::non_negative());
   spec.real("Gravity", 9.81, "g.", "m/s^2", Range::non_negative());
+  spec.real("Cant", 0,
+            "Cant of the track, positive with the left rail raised: the weight and the axle load "
+            "(vertical in the world) get a share sin(cant) along the track's y, to the right.",
+            "rad", Range::closed(-0.15, 0.15));
   return spec;
 }
 

@@ -102,6 +102,7 @@ void WheelsetDynamicsStep::run(StepContext& context) {
   body.yaw_inertia = w.get<double>("Yaw inertia");
   body.axle_load = w.get<double>("Axle load");
   body.gravity = w.get<double>("Gravity");
+  body.cant = w.get<double>("Cant");
   const auto& s = p.sublist("Suspension");
   AxleBoxSuspension suspension;
   const auto stiffness = s.get<Teuchos::Array<double>>("Stiffness");
@@ -197,8 +198,8 @@ void WheelsetDynamicsStep::run(StepContext& context) {
                     root);
   std::vector<std::string> contact_columns{"time_s"};
   for (const char* name : kContactNames)
-    for (const char* q : {"active", "rail_y_m", "contact_angle_rad", "N_N", "Fx_N", "Fy_N", "xi",
-                          "eta", "phi_per_m"})
+    for (const char* q : {"active", "rail_y_m", "rail_z_m", "rolling_radius_m", "contact_angle_rad",
+                          "N_N", "Fx_N", "Fy_N", "xi", "eta", "phi_per_m"})
       contact_columns.push_back(std::string(name) + "_" + q);
   for (const char* wheel : {"right", "left"})
     for (const char* q : {"Q_N", "Y_N", "Y_over_Q"})
@@ -213,8 +214,9 @@ void WheelsetDynamicsStep::run(StepContext& context) {
     std::vector<double> row{time};
     for (const ContactState& c : states)
       for (double value :
-           {c.active ? 1.0 : 0.0, c.point.rail_point.y, c.point.contact_angle, c.hertz.load,
-            c.creep.Fx, c.creep.Fy, c.creepage.longitudinal, c.creepage.lateral, c.creepage.spin})
+           {c.active ? 1.0 : 0.0, c.point.rail_point.y, c.point.rail_point.z,
+            c.point.rolling_radius, c.point.contact_angle, c.hertz.load, c.creep.Fx, c.creep.Fy,
+            c.creepage.longitudinal, c.creepage.lateral, c.creepage.spin})
         row.push_back(value);
     for (int side = 0; side < 2; ++side) {
       const auto f = wheel_forces(states, side);

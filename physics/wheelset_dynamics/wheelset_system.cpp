@@ -1,6 +1,7 @@
 #include "physics/wheelset_dynamics/wheelset_system.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace railfe {
@@ -98,9 +99,11 @@ void WheelsetSystem::internal_force(const double* u, const double* v, double* fo
 void WheelsetSystem::external_force(double time, double* force) {
   for (int i = 0; i < n_wheelset_unknowns; ++i)
     force[i] = 0;
-  force[2] = body_.mass * body_.gravity + body_.axle_load;
+  const double weight = body_.mass * body_.gravity + body_.axle_load;
+  force[1] = weight * std::sin(body_.cant);
+  force[2] = weight * std::cos(body_.cant);
   if (body_.lateral_force)
-    force[1] = body_.lateral_force(time);
+    force[1] += body_.lateral_force(time);
 }
 
 void WheelsetSystem::tangent(const double* u, const double* v, Eigen::MatrixXd& stiffness,

@@ -25,6 +25,9 @@ struct WheelsetBody {
   double yaw_inertia = 800;   ///< about z (kg m²)
   double axle_load = 0;       ///< vertical force on the axle boxes besides its weight (N, down)
   double gravity = 9.81;      ///< g (m/s²)
+  /// Cant of the track (rad, positive with the left rail raised): the weight and the axle
+  /// load, vertical in the world, have a share sin(cant) along the track's y.
+  double cant = 0;
   /// Lateral force on the centre (N, to the right) against time; empty: none.
   std::function<double(double)> lateral_force;
 };
