@@ -294,7 +294,9 @@ void WheelRailContact::tangent(const ContactKinematics& state, const ContactStat
                                double* stiffness, double* damping) const {
   double base[9], shifted[9];
   internal_forces(at, state, base, base + 6);
-  for (int pass = 0; pass < 2; ++pass) {
+  // The seed's damping replaces the velocity columns: do not difference them first.
+  const bool seed_damping = settings_.kalker_damping && at.active && state.speed > 0;
+  for (int pass = 0; pass < (seed_damping ? 1 : 2); ++pass) {
     double* matrix = pass == 0 ? stiffness : damping;
     for (int j = 0; j < 9; ++j) {
       if (j == 0 || j == 6) {
@@ -328,7 +330,7 @@ void WheelRailContact::tangent(const ContactKinematics& state, const ContactStat
         matrix[i * 9 + j] = (shifted[i] - base[i]) / step;
     }
   }
-  if (settings_.kalker_damping && at.active && state.speed > 0)
+  if (seed_damping)
     kalker_damping_matrix(state, at, damping);
 }
 

@@ -229,4 +229,11 @@ std::string shipped_profile(const std::string& file_name) {
   return std::string(RAILFE_PROFILE_DIRECTORY) + "/" + file_name;
 }
 
+std::shared_ptr<const ProfileCurve> shipped_curve(const std::string& file_name) {
+  std::vector<Vec2> points;
+  for (const auto& p : read_profile_file(shipped_profile(file_name)).points)
+    points.push_back({p[0], p[1]});
+  return spline_curve(points);
+}
+
 }  // namespace railfe

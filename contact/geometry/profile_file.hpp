@@ -12,10 +12,12 @@
 /// Every list then passes check_profile (profile_checks.hpp).
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "contact/geometry/profile_checks.hpp"
+#include "contact/geometry/profile_curve.hpp"
 
 namespace railfe {
 
@@ -57,5 +59,9 @@ ProfileFile read_profile_file(const std::string& path, const ProfileReadSettings
 
 /// Path of a profile file shipped with railfe in inputs/profiles (e.g. "MBench_S1002_v3.prw").
 std::string shipped_profile(const std::string& file_name);
+
+/// The shipped profile \p file_name read with the default checks and splined through its points
+/// as listed (for tests, studies and benchmarks; decks go through their Profiles settings).
+std::shared_ptr<const ProfileCurve> shipped_curve(const std::string& file_name);
 
 }  // namespace railfe

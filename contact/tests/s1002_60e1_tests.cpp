@@ -15,14 +15,6 @@
 namespace railfe {
 namespace {
 
-std::shared_ptr<const ProfileCurve> shipped_curve(const std::string& name) {
-  const ProfileFile file = read_profile_file(shipped_profile(name));
-  std::vector<Vec2> points;
-  for (const auto& p : file.points)
-    points.push_back({p[0], p[1]});
-  return spline_curve(points);
-}
-
 const WheelRailGeometry& benchmark_geometry() {
   static const WheelRailGeometry geometry = [] {
     TrackLayout track;

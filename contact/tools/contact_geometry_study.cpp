@@ -21,13 +21,6 @@
 namespace railfe {
 namespace {
 
-std::shared_ptr<const ProfileCurve> shipped_curve(const std::string& name) {
-  std::vector<Vec2> points;
-  for (const auto& p : read_profile_file(shipped_profile(name)).points)
-    points.push_back({p[0], p[1]});
-  return spline_curve(points);
-}
-
 WheelRailGeometry benchmark_geometry() {
   TrackLayout track;
   track.profile_inclined = true;

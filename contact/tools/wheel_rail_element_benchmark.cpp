@@ -33,14 +33,6 @@ using namespace railfe;
 constexpr int kRepetitions = 7;
 constexpr double kBatchSeconds = 0.05;
 
-std::shared_ptr<const ProfileCurve> shipped_curve(const std::string& name) {
-  const ProfileFile file = read_profile_file(shipped_profile(name));
-  std::vector<Vec2> points;
-  for (const auto& p : file.points)
-    points.push_back({p[0], p[1]});
-  return spline_curve(points);
-}
-
 // Median time of one call of \p work in ns (batches of at least kBatchSeconds).
 double median_ns(const std::function<void()>& work) {
   using clock = std::chrono::steady_clock;

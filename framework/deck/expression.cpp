@@ -47,4 +47,12 @@ const std::string& Expression::text() const {
   return state_->text;
 }
 
+std::function<double(double)> function_of_x(const std::string& text, const std::string& deck,
+                                            const std::string& path) {
+  if (text.empty())
+    return {};
+  auto expression = std::make_shared<Expression>(text, deck, path);
+  return [expression](double x) { return (*expression)(x, 0, 0, 0); };
+}
+
 }  // namespace railfe

@@ -3,6 +3,7 @@
 /// Scalar functions of position and time written in a deck, e.g. "1e-3*(2*x + y + z)/2"
 /// (muParser syntax: + - * / ^, sin, cos, exp, sqrt, abs, min, max, pi via _pi).
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -27,5 +28,11 @@ class Expression {
   struct State;
   std::unique_ptr<State> state_;
 };
+
+/// A function of one variable written in a deck with x, e.g. of the position s along a track:
+/// \p text parsed as an Expression (InputError naming \p deck and \p path), or an empty
+/// function for ''.
+std::function<double(double)> function_of_x(const std::string& text, const std::string& deck,
+                                            const std::string& path);
 
 }  // namespace railfe

@@ -76,13 +76,8 @@ Irregularity irregularity_of(const MovingContactSpec& spec, const std::string& d
                              const std::string& where) {
   if (!spec.irregularity_file.empty())
     return Irregularity::from_csv(spec.irregularity_file);
-  auto function = [&](const std::string& text) -> std::function<double(double)> {
-    if (text.empty())
-      return {};
-    auto expression = std::make_shared<Expression>(text, deck, where);
-    return [expression](double s) { return (*expression)(s, 0, 0, 0); };
-  };
-  return Irregularity(function(spec.vertical_irregularity), function(spec.lateral_irregularity));
+  return Irregularity(function_of_x(spec.vertical_irregularity, deck, where),
+                      function_of_x(spec.lateral_irregularity, deck, where));
 }
 
 }  // namespace

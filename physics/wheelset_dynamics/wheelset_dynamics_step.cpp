@@ -24,17 +24,6 @@ namespace {
 const char* kContactNames[n_wheelset_contacts] = {"right_tread", "right_flange", "left_tread",
                                                   "left_flange"};
 
-// A function of the track position s written in the deck (variable x), or none for ''.
-std::function<double(double)> track_function(const Teuchos::ParameterList& step,
-                                             const std::string& key, const std::string& deck,
-                                             const std::string& path) {
-  const std::string text = step.get<std::string>(key);
-  if (text.empty())
-    return {};
-  auto expression = std::make_shared<Expression>(text, deck, path + "/" + key);
-  return [expression](double s) { return (*expression)(s, 0, 0, 0); };
-}
-
 WheelRailContactSettings contact_settings(const Teuchos::ParameterList& step) {
   const auto& c = step.sublist("Contact");
   WheelRailContactSettings settings;
@@ -72,7 +61,7 @@ WheelsetDynamicsStep::WheelsetDynamicsStep(const Teuchos::ParameterList& paramet
 void WheelsetDynamicsStep::check(const CheckContext& context) {
   geometry_ = read_profile_geometry(*parameters_, context);
   for (const char* key : {"Lateral irregularity", "Vertical irregularity"})
-    track_function(*parameters_, key, context.source(), context.path);
+    function_of_x(parameters_->get<std::string>(key), context.source(), context.path + "/" + key);
   const std::string force = parameters_->get<std::string>("Lateral force");
   if (!force.empty())
     Expression(force, context.source(), context.path + "/Lateral force");
@@ -129,8 +118,10 @@ void WheelsetDynamicsStep::run(StepContext& context) {
     for (int k = 0; k < n_wheelset_contacts; ++k)
       system.contact(k).use_table(table);
   }
-  RigidRails rails(track_function(p, "Lateral irregularity", context.source(), context.path),
-                   track_function(p, "Vertical irregularity", context.source(), context.path),
+  RigidRails rails(function_of_x(p.get<std::string>("Lateral irregularity"), context.source(),
+                                 context.path + "/Lateral irregularity"),
+                   function_of_x(p.get<std::string>("Vertical irregularity"), context.source(),
+                                 context.path + "/Vertical irregularity"),
                    p.get<double>("Start"), V);
 
   // Static balance at the initial pose, the internal nodes on the rails.
