@@ -75,6 +75,14 @@ void WheelsetDynamicsStep::check(const CheckContext& context) {
   if (dt > parameters_->get<double>("End time"))
     throw_input_error(context.source(), context.path + "/Time step", "is longer than End time",
                       "at most End time");
+  // The frame's yaw acts only through the longitudinal springs, which hold the yaw.
+  const auto& suspension = parameters_->sublist("Suspension");
+  if (suspension.get<double>("Frame yaw") != 0 &&
+      suspension.get<Teuchos::Array<double>>("Stiffness")[0] <= 0)
+    throw_input_error(context.source(), context.path + "/Suspension/Frame yaw",
+                      "would be ignored: without longitudinal axle-box springs (Stiffness[0] = 0) "
+                      "nothing holds the wheelset at that yaw",
+                      "0, or a longitudinal Stiffness > 0");
 }
 
 void WheelsetDynamicsStep::run(StepContext& context) {
