@@ -91,7 +91,12 @@ void BlockSaddlePointSolver::factor(const double* u, const double* v,
     vehicle_version_ = system_.vehicle_versions();
     vehicle_matrix_ = system_.vehicle().matrix();
     vehicle_lu_.compute(vehicle_matrix_);
-    vehicle_regular_ = nv == 0 || vehicle_lu_.rcond() > 1e-12;
+    // An unknown with no mass or stiffness leaves a zero pivot, which Eigen's LU skips and its
+    // condition estimate can miss: look at the pivots too.
+    const auto pivots = vehicle_lu_.matrixLU().diagonal().cwiseAbs();
+    const double rcond = nv == 0 ? 1.0 : vehicle_lu_.rcond();
+    vehicle_regular_ = nv == 0 || (std::isfinite(rcond) && rcond > 1e-12 &&
+                                   pivots.minCoeff() > 1e-14 * pivots.maxCoeff());
     vehicle_norm_ = nv == 0 ? 0.0 : vehicle_matrix_.cwiseAbs().rowwise().sum().maxCoeff();
   }
   if (vehicle_regular_) {  // S = C_s A_s⁻¹ C_sᵀ + C_v A_v⁻¹ C_vᵀ (n_c × n_c)

@@ -176,6 +176,77 @@ TEST(HhtConstraints, BlockAndMonolithicSolversAgree) {
   }
 }
 
+// A vehicle unknown with neither mass nor stiffness (a contact node out of contact) beside
+// others: Eigen's LU skips its zero pivot and its condition estimate can stay finite, so the
+// block solver must see the pivot itself and take the bordered path; it then agrees with the
+// monolithic solver.
+TEST(HhtConstraints, BlockSolverBordersAVehicleWithAnIdleUnknown) {
+  const int n = 6;
+  SparseLinearSystem::Matrix mass(n, n), stiffness(n, n);
+  std::vector<Eigen::Triplet<double>> mt, kt;
+  for (int i = 0; i < n; ++i) {
+    mt.emplace_back(i, i, 1.0);
+    kt.emplace_back(i, i, 1000.0 * (i + 1));
+  }
+  mass.setFromTriplets(mt.begin(), mt.end());
+  stiffness.setFromTriplets(kt.begin(), kt.end());
+  class Ties : public ConstraintSet {
+   public:
+    void rows_at(double time, ConstraintRows& rows) override {
+      for (int k = 0; k < 2; ++k) {  // vehicle unknowns 1 and 2 on structure unknowns 2 and 4
+        rows.start_row(0.001 * std::sin(20 * time));
+        rows.add_entry(n + 1 + k, 1.0);
+        rows.add_entry(2 + 2 * k, -1.0);
+      }
+    }
+  } ties;
+  std::vector<double> results[2];
+  for (int which = 0; which < 2; ++which) {
+    SparseLinearSystem structure(mass, {}, stiffness);
+    Matrix mv = Matrix::Zero(3, 3), kv = Matrix::Zero(3, 3);
+    mv(0, 0) = 7;
+    kv(0, 0) = kv(1, 1) = 500;
+    kv(0, 1) = kv(1, 0) = -500;  // unknown 2 idle: no mass, no stiffness
+    LinearDenseSystem vehicle(mv, Matrix::Zero(3, 3), kv, [](double, double* f) {
+      f[0] = -70;
+      f[1] = f[2] = 0;
+    });
+    CoupledSystem coupled(structure, vehicle);
+    BlockSaddlePointSolver block(coupled);
+    MonolithicSaddlePointSolver monolithic(coupled);
+    HhtIntegrator integrator(NewmarkScheme::hht(-0.1), coupled);
+    integrator.constrain(ties, which == 0 ? static_cast<SaddlePointSolver&>(block) : monolithic);
+    std::vector<double> u(n + 3, 0.0), v(n + 3, 0.0), a(n + 3, 0.0);
+    integrator.initialize(0, u.data(), v.data(), a.data());
+    for (int step = 0; step < 50; ++step) {
+      integrator.advance(step * 1e-3, 1e-3, u.data(), v.data(), a.data());
+      results[which].insert(results[which].end(), u.begin(), u.end());
+      results[which].push_back(integrator.multipliers()[0]);
+    }
+  }
+  double scale = 0, difference = 0;
+  for (std::size_t i = 0; i < results[1].size(); ++i) {
+    ASSERT_TRUE(std::isfinite(results[0][i]));
+    scale = std::max(scale, std::abs(results[1][i]));
+    difference = std::max(difference, std::abs(results[0][i] - results[1][i]));
+  }
+  EXPECT_GT(scale, 0);
+  EXPECT_LT(difference, 1e-11 * scale);
+}
+
+// rates_by_differences() on a row that slides along a chain while its right-hand side moves:
+// ġ − Ċ u and g̈ − C̈ u − 2 Ċ v in closed form (C is linear in t inside a link, so C̈ = 0).
+TEST(HhtConstraints, RatesByDifferencesOfASlidingRow) {
+  const double speed = 0.3, amplitude = 0.002, time = 0.5;  // inside link 0: w = 0.15
+  TestConstraints slide(4, speed, 4, amplitude);
+  const double u[5] = {0.1, -0.2, 0.05, 0, 0.3}, v[5] = {1.0, 2.0, -1.0, 0, 0.5};
+  double velocity = 0, acceleration = 0;
+  rates_by_differences(slide, time, 1e-4, u, v, 1, &velocity, &acceleration);
+  // Row: u_4 − (1 − w) u_0 − w u_1 = A sin 5t, w = speed t: Ċ = speed (e_0 − e_1).
+  EXPECT_NEAR(velocity, 5 * amplitude * std::cos(5 * time) - speed * (u[0] - u[1]), 1e-9);
+  EXPECT_NEAR(acceleration, -25 * amplitude * std::sin(5 * time) - 2 * speed * (v[0] - v[1]), 1e-6);
+}
+
 // A structure whose block solves are off by 1e-6 (its own check turned off, as the block solver
 // permits), through the factor's halves or through full solves: the block solver's end-to-end
 // check of the structure equations refuses the step.

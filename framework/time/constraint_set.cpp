@@ -1,6 +1,7 @@
 #include "framework/time/constraint_set.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace railfe {
 
@@ -43,6 +44,30 @@ void ConstraintSet::rates(double, const double*, const double*, std::size_t n_ro
                           double* velocity, double* acceleration) {
   std::fill(velocity, velocity + n_rows, 0.0);
   std::fill(acceleration, acceleration + n_rows, 0.0);
+}
+
+void rates_by_differences(ConstraintSet& set, double time, double h, const double* u,
+                          const double* v, std::size_t n_rows, double* velocity,
+                          double* acceleration) {
+  ConstraintRows rows[3];
+  std::vector<double> cu[3], cv[3];
+  for (int i = 0; i < 3; ++i) {
+    set.rows_at(time + (i - 1) * h, rows[i]);
+    if (rows[i].size() != n_rows)
+      throw std::logic_error("rates_by_differences: the rows changed in number within ±h");
+    cu[i].resize(n_rows);
+    cv[i].resize(n_rows);
+    rows[i].multiply(u, cu[i].data());
+    rows[i].multiply(v, cv[i].data());
+  }
+  for (std::size_t r = 0; r < n_rows; ++r) {
+    // f(t) = g(t) − C(t) u at fixed u: ḟ = ġ − Ċ u, f̈ = g̈ − C̈ u.
+    double f[3];
+    for (int i = 0; i < 3; ++i)
+      f[i] = rows[i].rhs[r] - cu[i][r];
+    velocity[r] = (f[2] - f[0]) / (2 * h);
+    acceleration[r] = (f[2] - 2 * f[1] + f[0]) / (h * h) - (cv[2][r] - cv[0][r]) / h;
+  }
 }
 
 bool ConstraintRows::same_matrix(const ConstraintRows& other) const {

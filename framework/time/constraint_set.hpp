@@ -65,6 +65,14 @@ class ConstraintSet {
                      double* velocity, double* acceleration);
 };
 
+/// The rates of \p set's rows at \p time (ConstraintSet::rates()) by central differences of
+/// rows_at() over \p time ± \p h: velocity = ġ − Ċ u, acceleration = g̈ − C̈ u − 2 Ċ v. For sets
+/// whose rows_at() has no side effects and writes the same rows, in the same order, at the three
+/// times (their entries may differ).
+void rates_by_differences(ConstraintSet& set, double time, double h, const double* u,
+                          const double* v, std::size_t n_rows, double* velocity,
+                          double* acceleration);
+
 /// The linear solves of a constrained Newton iteration: x and μ with
 ///   [A Cᵀ; C 0] [x; μ] = [r; r_c],
 /// A = the system's matrix for the coefficients given (MatrixCoefficients), C the rows.

@@ -1,5 +1,6 @@
 #include "physics/wheelset_dynamics/wheelset_balance.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -76,6 +77,62 @@ WheelsetBalance balance_wheelset(WheelsetSystem& system, const WheelRailGeometry
   message << "the static balance of the wheelset did not converge (residual " << balance.residual
           << " N after " << balance.iterations << " Newton iterations)";
   throw RunError(message.str());
+}
+
+WheelsetBalance balance_on_rail_beams(WheelsetSystem& system, const WheelRailGeometry& geometry,
+                                      BeamRails& rails, SparseLinearSystem& structure,
+                                      std::vector<double>& u, bool rolling) {
+  const std::size_t ns = structure.n_unknowns();
+  MatrixCoefficients statics;
+  statics.stiffness = 1;
+  structure.factor(u.data(), u.data(), statics);
+  std::vector<double> uv(u.begin() + static_cast<long>(ns), u.end());
+  std::vector<double> zero(uv.size(), 0.0), force(uv.size()), lambda(3 * n_wheelset_contacts);
+  std::vector<double> load(u.size()), rails_u(ns);
+  ConstraintRows rows;
+  WheelsetBalance balance;
+  double moved = 0;
+  for (int round = 0; round < 30; ++round) {
+    // The internal nodes where the rows put them on the rails' present shape.
+    rows.clear();
+    rails.rows_at(0, rows);
+    moved = 0;
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+      double node = rows.rhs[r];
+      for (std::size_t e = rows.offsets[r]; e < rows.offsets[r + 1]; ++e)
+        if (rows.columns[e] < ns)
+          node -= rows.values[e] * u[rows.columns[e]];
+      moved = std::max(moved, std::abs(node - uv[6 + r]));
+      uv[6 + r] = node;
+    }
+    if (round > 0 && moved <= 1e-13)
+      break;
+    const WheelsetBalance wheelset = balance_wheelset(system, geometry, uv);
+    balance.iterations += wheelset.iterations;
+    balance.residual = wheelset.residual;
+    balance.weight = wheelset.weight;
+    rails.set_levers(system.contact_states(uv.data(), zero.data()));
+    rows.clear();
+    rails.rows_at(0, rows);
+    // The nodes carry no load of their own: f_int + Cᵀλ = 0 on each (its entry is 1).
+    system.set_rolling(rolling);
+    system.internal_force(uv.data(), zero.data(), force.data());
+    for (std::size_t r = 0; r < lambda.size(); ++r)
+      lambda[r] = -force[6 + r];
+    std::fill(load.begin(), load.end(), 0.0);
+    rows.add_transpose(lambda.data(), -1.0, load.data());
+    structure.solve(load.data(), rails_u.data());
+    std::copy(rails_u.begin(), rails_u.end(), u.begin());
+  }
+  if (moved > 1e-13) {
+    std::ostringstream message;
+    message << "the static balance of the wheelset on its rail beams did not settle (the rails "
+               "under the contacts still moved "
+            << moved << " m in the last round)";
+    throw RunError(message.str());
+  }
+  std::copy(uv.begin(), uv.end(), u.begin() + static_cast<long>(ns));
+  return balance;
 }
 
 }  // namespace railfe

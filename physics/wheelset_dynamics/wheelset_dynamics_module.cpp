@@ -2,6 +2,7 @@
 
 #include "physics/common/profile_geometry.hpp"
 #include "physics/wheelset_dynamics/wheelset_dynamics_step.hpp"
+#include "physics/wheelset_dynamics/wheelset_track.hpp"
 
 namespace railfe {
 
@@ -88,7 +89,8 @@ ParameterSpec contact_parameters() {
 
 ParameterSpec wheelset_dynamics_parameters() {
   ParameterSpec spec(
-      "A rigid wheelset on its suspension running on rigid rails: Hertz normal contact, creep "
+      "A rigid wheelset on its suspension running on rigid rails or rail beams on seats: Hertz "
+      "normal contact, creep "
       "forces and online contact search at tread and flange of each wheel, contact forces as "
       "Lagrange multipliers, HHT-alpha from the static balance.");
   spec.sublist("Profiles", profile_parameters(), "Profile files.");
@@ -96,6 +98,7 @@ ParameterSpec wheelset_dynamics_parameters() {
   spec.sublist("Wheelset", wheelset_parameters(), "Mass and loads.");
   spec.sublist("Suspension", suspension_parameters(), "Primary suspension.");
   spec.sublist("Contact", contact_parameters(), "The contact element.");
+  spec.sublist("Rails", track_rail_parameters(), "Rigid rails, or a beam per rail on rail seats.");
   spec.required_real("Speed", "Forward speed (creepages divide by it).", "m/s", Range::positive());
   spec.real("Start", 0, "Position along the track at t = 0 (the irregularities' s).", "m");
   spec.required_real("End time", "Simulated duration.", "s", Range::positive());
@@ -143,7 +146,8 @@ ModuleDescriptor wheelset_dynamics_module() {
   ModuleDescriptor module;
   module.name = "wheelset dynamics";
   module.summary =
-      "A rigid wheelset on rigid rails with the implicit wheel-rail contact element (Hertz, "
+      "A rigid wheelset on rigid rails or rail beams with the implicit wheel-rail contact element "
+      "(Hertz, "
       "creep forces, online search, Lagrange multipliers), HHT-alpha from the static balance.";
   module.parameters = wheelset_dynamics_parameters;
   module.create = [](const Teuchos::ParameterList& parameters) {

@@ -9,13 +9,12 @@
 #include "framework/base/error.hpp"
 #include "framework/deck/expression.hpp"
 #include "framework/output/csv_writer.hpp"
-#include "framework/solvers/saddle_point_solvers.hpp"
 #include "framework/time/newmark.hpp"
 #include "framework/time/newton_step.hpp"
 #include "physics/common/chart_script.hpp"
 #include "physics/common/profile_geometry.hpp"
-#include "physics/wheelset_dynamics/wheelset_balance.hpp"
 #include "physics/wheelset_dynamics/wheelset_oscillation.hpp"
+#include "physics/wheelset_dynamics/wheelset_track.hpp"
 
 namespace railfe {
 
@@ -75,6 +74,22 @@ void WheelsetDynamicsStep::check(const CheckContext& context) {
   if (dt > parameters_->get<double>("End time"))
     throw_input_error(context.source(), context.path + "/Time step", "is longer than End time",
                       "at most End time");
+  const auto& rails = parameters_->sublist("Rails");
+  if (rails.get<std::string>("Model") == "beams") {
+    const std::string path = context.path + "/Rails";
+    const RailBeamLayout layout = rail_beam_layout(rails, context.source(), path);
+    const double from = parameters_->get<double>("Start");
+    const double to =
+        from + parameters_->get<double>("Speed") * parameters_->get<double>("End time");
+    if (from < 0 || to > layout.length) {
+      std::ostringstream what;
+      what << "(" << layout.length << " m from s = 0) does not hold the run: the wheelset goes "
+           << "from s = " << from << " m (Start) to " << to << " m";
+      throw_input_error(context.source(), path + "/Length", what.str(),
+                        "a Length that holds Start and Start + Speed × End time, best with a few "
+                        "metres to spare at each end");
+    }
+  }
   // The frame's yaw acts only through the longitudinal springs, which hold the yaw.
   const auto& suspension = parameters_->sublist("Suspension");
   if (suspension.get<double>("Frame yaw") != 0 &&
@@ -126,73 +141,99 @@ void WheelsetDynamicsStep::run(StepContext& context) {
     for (int k = 0; k < n_wheelset_contacts; ++k)
       system.contact(k).use_table(table);
   }
-  RigidRails rails(function_of_x(p.get<std::string>("Lateral irregularity"), context.source(),
-                                 context.path + "/Lateral irregularity"),
-                   function_of_x(p.get<std::string>("Vertical irregularity"), context.source(),
-                                 context.path + "/Vertical irregularity"),
-                   p.get<double>("Start"), V);
+  WheelsetTrack track(p.sublist("Rails"), context.source(), context.path + "/Rails", *geometry_,
+                      system,
+                      function_of_x(p.get<std::string>("Lateral irregularity"), context.source(),
+                                    context.path + "/Lateral irregularity"),
+                      function_of_x(p.get<std::string>("Vertical irregularity"), context.source(),
+                                    context.path + "/Vertical irregularity"),
+                      p.get<double>("Start"), V);
+  const std::size_t o = track.offset();  // the wheelset's first unknown
 
   // Static balance at the initial pose, the internal nodes on the rails.
-  std::vector<double> u(n_wheelset_unknowns, 0.0), v(u.size(), 0.0), a(u.size(), 0.0);
-  const auto offset = rails.offsets(0);
-  for (int k = 0; k < n_wheelset_contacts; ++k) {
-    u[6 + 3 * k + 1] = offset[0];
-    u[6 + 3 * k + 2] = offset[1];
-  }
-  u[1] = p.get<double>("Initial lateral shift") + offset[0];
-  u[5] = p.get<double>("Initial yaw");
+  std::vector<double> u(o + n_wheelset_unknowns, 0.0), v(u.size(), 0.0), a(u.size(), 0.0);
+  const auto offset = track.offsets(0);
+  u[o + 1] = p.get<double>("Initial lateral shift") + offset[0];
+  u[o + 5] = p.get<double>("Initial yaw");
   WheelsetBalance balance;
   try {
-    balance = balance_wheelset(system, *geometry_, u);
+    balance = track.balance(*geometry_, u);
   } catch (const RunError& error) {
     throw RunError(context.path + ": " + error.what());
   }
-  auto states = system.contact_states(u.data(), v.data());
+  auto states = system.contact_states(u.data() + o, v.data() + o);
+  track.accept(states);
   const auto right = wheel_forces(states, 0), left = wheel_forces(states, 1);
   context.summary.add(section, "static load right wheel", right[0], "N");
   context.summary.add(section, "static load left wheel", left[0], "N");
   context.summary.add(section, "weight and axle load", balance.weight, "N");
   context.summary.add(section, "static balance iterations", balance.iterations);
+  const auto deflection = track.rail_deflection(0, u.data());
+  if (track.flexible()) {
+    context.summary.add(section, "static rail deflection under the right wheel", deflection[0],
+                        "m");
+    context.summary.add(section, "static rail deflection under the left wheel", deflection[1], "m");
+  }
   {
-    CsvWriter file(context.output.staging_path(context.step_name + "_static.csv"),
-                   {"wheel", "Q_N", "Y_N", "contact_angle_rad", "rolling_radius_m"}, root);
+    CsvWriter file(
+        context.output.staging_path(context.step_name + "_static.csv"),
+        {"wheel", "Q_N", "Y_N", "contact_angle_rad", "rolling_radius_m", "rail_deflection_m"},
+        root);
     for (int side = 0; side < 2; ++side) {
       const auto& tread = states[side == 0 ? 0 : 2];
       const auto f = side == 0 ? right : left;
       file.write_row({side == 0 ? "right" : "left", CsvWriter::format(f[0]),
                       CsvWriter::format(f[1]), CsvWriter::format(tread.point.contact_angle),
-                      CsvWriter::format(tread.point.rolling_radius)});
+                      CsvWriter::format(tread.point.rolling_radius),
+                      CsvWriter::format(deflection[side])});
     }
     file.write_row({"total", CsvWriter::format(right[0] + left[0]),
-                    CsvWriter::format(right[1] - left[1]), "", ""});
-    file.write_row({"weight", CsvWriter::format(balance.weight), "0", "", ""});
+                    CsvWriter::format(right[1] - left[1]), "", "", ""});
+    file.write_row({"weight", CsvWriter::format(balance.weight), "0", "", "", ""});
   }
 
   // The nominal spin: rolling without longitudinal creep at the mean tread radius.
   const double radius = 0.5 * (states[0].point.rolling_radius + states[2].point.rolling_radius);
   system.set_spin(-V / radius);
   system.set_rolling(true);
-  v[1] = p.get<double>("Initial lateral velocity");
+  if (track.flexible()) {
+    try {
+      track.balance(*geometry_, u, true);
+    } catch (const RunError& error) {
+      throw RunError(context.path + ": " + error.what());
+    }
+    states = system.contact_states(u.data() + o, v.data() + o);
+    track.accept(states);
+  }
+  v[o + 1] = p.get<double>("Initial lateral velocity");
   NewtonSettings newton;
   newton.max_iterations = p.get<int>("Newton iterations");
   newton.line_search = p.get<bool>("Line search");
   newton.residual_relative = newton.increment_relative = p.get<double>("Newton tolerance");
-  NewtonStepSolver solver(system, newton);
-  MonolithicSaddlePointSolver saddle(system);
-  solver.constrain(&rails, &saddle);
+  NewtonStepSolver solver(track.system(), newton);
+  solver.constrain(&track.constraints(), &track.saddle());
   {
+    // The internal nodes move with the rails' rates (ġ − Ċ u, the rails at rest).
     std::vector<double> rate(3 * n_wheelset_contacts), unused(rate.size());
-    rails.rates(0, u.data(), v.data(), rate.size(), rate.data(), unused.data());
+    track.constraints().rates(0, u.data(), v.data(), rate.size(), rate.data(), unused.data());
     for (std::size_t i = 0; i < rate.size(); ++i)
-      v[6 + i] = rate[i];
+      v[o + 6 + i] = rate[i];
   }
   solver.initial_acceleration(0, u.data(), v.data(), a.data());
   NewmarkIntegrator integrator(NewmarkScheme::hht(p.get<double>("Alpha")), u.size());
 
-  std::vector<std::string> columns{"time_s",    "x_m",        "y_m",
-                                   "z_m",       "roll_rad",   "spin_rad",
-                                   "yaw_rad",   "vy_m_per_s", "yaw_rate_rad_per_s",
-                                   "iterations"};
+  std::vector<std::string> columns{"time_s",
+                                   "x_m",
+                                   "y_m",
+                                   "z_m",
+                                   "roll_rad",
+                                   "spin_rad",
+                                   "yaw_rad",
+                                   "vy_m_per_s",
+                                   "yaw_rate_rad_per_s",
+                                   "iterations",
+                                   "right_rail_deflection_m",
+                                   "left_rail_deflection_m"};
   CsvWriter history(context.output.staging_path(context.step_name + "_wheelset.csv"), columns,
                     root);
   std::vector<std::string> contact_columns{"time_s"};
@@ -208,8 +249,10 @@ void WheelsetDynamicsStep::run(StepContext& context) {
   CsvWriter events(context.output.staging_path(context.step_name + "_contact_events.csv"),
                    {"time_s", "contact", "event", "N_N"}, root);
   auto write_rows = [&](double time, int iterations) {
-    history.write_row(
-        {time, u[0], u[1], u[2], u[3], u[4], u[5], v[1], v[5], static_cast<double>(iterations)});
+    history.write_row({time, u[o], u[o + 1], u[o + 2], u[o + 3], u[o + 4], u[o + 5], v[o + 1],
+                       v[o + 5], static_cast<double>(iterations),
+                       track.rail_deflection(time, u.data())[0],
+                       track.rail_deflection(time, u.data())[1]});
     std::vector<double> row{time};
     for (const ContactState& c : states)
       for (double value :
@@ -227,13 +270,13 @@ void WheelsetDynamicsStep::run(StepContext& context) {
   const double end = p.get<double>("End time"), dt = p.get<double>("Time step");
   const double interval = p.get<double>("History interval");
   const long n_steps = std::lround(std::ceil(end / dt - 1e-9));
-  states = system.contact_states(u.data(), v.data());
+  states = system.contact_states(u.data() + o, v.data() + o);
   write_rows(0, 0);
   std::array<bool, n_wheelset_contacts> active;
   for (int k = 0; k < n_wheelset_contacts; ++k)
     active[k] = states[k].active;
   OscillationMeter oscillation;
-  oscillation.add(0, u[1] - offset[0]);
+  oscillation.add(0, u[o + 1] - offset[0]);
   double next_output = interval;
   std::size_t n_events = 0, n_conformal = 0;
   auto progress = context.progress("time steps", static_cast<double>(n_steps));
@@ -249,7 +292,8 @@ void WheelsetDynamicsStep::run(StepContext& context) {
       throw RunError(message.str());
     }
     time = (n + 1) * dt;
-    states = system.contact_states(u.data(), v.data());
+    states = system.contact_states(u.data() + o, v.data() + o);
+    track.accept(states);
     for (const ContactState& c : states)
       if (c.active && c.conformal) {
         ++n_conformal;
@@ -263,7 +307,7 @@ void WheelsetDynamicsStep::run(StepContext& context) {
                           active[k] ? (k % 2 ? "flange contact" : "contact") : "separation",
                           CsvWriter::format(states[k].hertz.load)});
       }
-    oscillation.add(time, u[1] - rails.offsets(time)[0]);
+    oscillation.add(time, u[o + 1] - track.offsets(time)[0]);
     // Both wheels in the air for 50 ms: the wheelset has left the rails (a climb or a jump
     // over), after which nothing it computes means anything. The run ends there, reported.
     const bool airborne = std::none_of(active.begin(), active.end(), [](bool a) { return a; });

@@ -42,10 +42,11 @@ ParameterSpec expectation_parameters() {
                 {"max", "the largest value (CSV: over the whole Column)"},
                 {"min", "the smallest value"},
                 {"max_abs", "the largest magnitude"},
+                {"mean", "the mean (of a history sampled at equal intervals: its time average)"},
                 {"at", "the value at one node or element (Index)"}},
                "Exodus: which value(s) to compare.");
   check.text("Where column", "",
-             "CSV, with Statistic max, min or max_abs: take the extreme only over the rows whose "
+             "CSV, with Statistic max, min, max_abs or mean: take it only over the rows whose "
              "value in this column lies within Where range (e.g. the patch's slave nodes that "
              "stick: 'slipping' within {0, 0}).");
   check.real_array("Where range", {}, "CSV: the closed interval {low, high} of Where column.", "",
@@ -147,8 +148,14 @@ RowFilter row_filter(const Teuchos::ParameterList& check, const CsvTable& table)
   return filter;
 }
 
-// The one value a Statistic (max, min, max_abs) picks from \p quantity.
+// The one value a Statistic (max, min, max_abs, mean) makes of \p quantity.
 Quantity reduce(const Quantity& quantity, const std::string& statistic) {
+  if (statistic == "mean") {
+    double sum = 0;
+    for (double value : quantity.values)
+      sum += value;
+    return Quantity{{sum / static_cast<double>(quantity.values.size())}, {quantity.points[0]}};
+  }
   auto pick = std::max_element(quantity.values.begin(), quantity.values.end());
   if (statistic == "min")
     pick = std::min_element(quantity.values.begin(), quantity.values.end());
@@ -186,7 +193,8 @@ Quantity read_quantity(const Teuchos::ParameterList& check, const std::string& d
     return reduce(quantity, statistic);
   }
   if (!check.get<std::string>("Where column").empty())
-    throw std::runtime_error("Where column needs a CSV Column and Statistic max, min or max_abs");
+    throw std::runtime_error(
+        "Where column needs a CSV Column and Statistic max, min, max_abs or mean");
   if (!check.get<std::string>("Column").empty()) {
     const std::string cell = csv_cell(check, path);
     double value = 0;

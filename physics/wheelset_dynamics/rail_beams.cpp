@@ -1,0 +1,159 @@
+#include "physics/wheelset_dynamics/rail_beams.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "framework/base/error.hpp"
+#include "physics/elements/beam_interpolation.hpp"
+
+namespace railfe {
+
+namespace {
+
+constexpr TrackSide kContactSide[n_wheelset_contacts] = {TrackSide::right, TrackSide::right,
+                                                         TrackSide::left, TrackSide::left};
+
+}  // namespace
+
+RailBeams::RailBeams(const RailBeamLayout& layout, std::array<double, 2> axis_y,
+                     std::array<double, 2> axis_z)
+    : axis_y_(axis_y), axis_z_(axis_z) {
+  const double spans = layout.length / layout.seat_spacing;
+  const long n_spans = std::lround(spans);
+  if (n_spans < 1 || std::abs(spans - n_spans) > 1e-9 * spans)
+    throw std::invalid_argument("the rails' length is not a whole number of seat spacings");
+  if (layout.elements_per_span < 1)
+    throw std::invalid_argument("a span needs at least one element");
+  for (double k : layout.seat_stiffness)
+    if (!(k > 0))
+      throw std::invalid_argument(
+          "every seat stiffness (x, y, z, roll) must be positive, else the rails are free to "
+          "move");
+  const int n_elements = static_cast<int>(n_spans) * layout.elements_per_span;
+  nodes_per_rail_ = n_elements + 1;
+  element_length_ = layout.length / n_elements;
+  n_unknowns_ = static_cast<std::size_t>(2 * 6 * nodes_per_rail_);
+  std::vector<Eigen::Triplet<double>> k, m, c;
+  const Eigen::Vector3d lateral(0, 1, 0);
+  for (int rail = 0; rail < 2; ++rail) {
+    const long first = 6L * nodes_per_rail_ * rail;
+    std::vector<PathElement> path;
+    for (int e = 0; e < n_elements; ++e) {
+      const Eigen::Vector3d a(e * element_length_, axis_y[rail], axis_z[rail]);
+      const Eigen::Vector3d b((e + 1) * element_length_, axis_y[rail], axis_z[rail]);
+      const BeamElement beam(a, b, lateral, layout.material, layout.section, true);
+      const Matrix12 ke = beam.stiffness(), me = beam.mass(layout.mass);
+      std::array<long, 12> dofs;
+      for (int i = 0; i < 12; ++i)
+        dofs[i] = first + 6L * e + i;
+      for (int i = 0; i < 12; ++i)
+        for (int j = 0; j < 12; ++j) {
+          k.emplace_back(dofs[i], dofs[j], ke(i, j));
+          if (me(i, j) != 0)
+            m.emplace_back(dofs[i], dofs[j], me(i, j));
+        }
+      path.push_back({beam, dofs});
+    }
+    paths_.emplace_back(std::move(path));
+    // Seats at every span's ends: along x, y, z and about x.
+    for (long span = 0; span <= n_spans; ++span) {
+      const long node = first + 6L * span * layout.elements_per_span;
+      for (int d = 0; d < 4; ++d) {
+        k.emplace_back(node + d, node + d, layout.seat_stiffness[d]);
+        if (layout.seat_damping[d] > 0)
+          c.emplace_back(node + d, node + d, layout.seat_damping[d]);
+      }
+    }
+  }
+  const auto n = static_cast<Eigen::Index>(n_unknowns_);
+  stiffness_.resize(n, n);
+  mass_.resize(n, n);
+  damping_.resize(n, n);
+  stiffness_.setFromTriplets(k.begin(), k.end());
+  mass_.setFromTriplets(m.begin(), m.end());
+  damping_.setFromTriplets(c.begin(), c.end());
+}
+
+long RailBeams::vertical_unknown_near(TrackSide side, double s) const {
+  const long node = std::lround(std::clamp(s / element_length_, 0.0, nodes_per_rail_ - 1.0));
+  return 6L * nodes_per_rail_ * index(side) + 6 * node + 2;
+}
+
+BeamRails::BeamRails(const RailBeams& rails, std::size_t vehicle_offset,
+                     std::function<double(double)> lateral, std::function<double(double)> vertical,
+                     double start, double speed)
+    : rails_(rails),
+      offset_(vehicle_offset),
+      lateral_(std::move(lateral)),
+      vertical_(std::move(vertical)),
+      start_(start),
+      speed_(speed) {}
+
+void BeamRails::set_levers(const std::array<ContactState, n_wheelset_contacts>& states) {
+  for (int k = 0; k < n_wheelset_contacts; ++k) {
+    const auto axis = rails_.axis(kContactSide[k]);
+    // θ_x e_x × (P − A) = θ_x (0, A_z − P_z, P_y − A_y).
+    levers_[k] = {axis[1] - states[k].point.rail_point.z, states[k].point.rail_point.y - axis[0]};
+  }
+}
+
+std::array<double, 2> BeamRails::offsets(double time) const {
+  const double s = start_ + speed_ * time;
+  return {lateral_ ? lateral_(s) : 0.0, vertical_ ? vertical_(s) : 0.0};
+}
+
+void BeamRails::rows_at(double time, ConstraintRows& rows) {
+  const double s = start_ + speed_ * time;
+  const auto offset = offsets(time);
+  for (int k = 0; k < n_wheelset_contacts; ++k) {
+    const BeamPath& path = rails_.path(kContactSide[k]);
+    std::size_t element;
+    double xi;
+    if (!path.locate(s, element, xi)) {
+      std::ostringstream message;
+      message << "the wheelset has reached s = " << s << " m at t = " << time
+              << " s, off the rails' beams (0 to " << path.length()
+              << " m): lengthen Rails/Length or shorten the run";
+      throw RunError(message.str());
+    }
+    const PathElement& piece = path.element(element);
+    const auto N = beam_translation_interpolation(piece.beam, xi);
+    for (int i = 0; i < 3; ++i) {
+      rows.start_row(i == 0 ? 0.0 : offset[i - 1]);
+      rows.add_entry(offset_ + 6 + 3 * k + i, 1.0);
+      // The roll, linear along the element (torsion), moves the point by its lever.
+      const double lever = i == 0 ? 0.0 : levers_[k][i - 1];
+      for (int j = 0; j < 12; ++j) {
+        double value = N(i, j);
+        if (j == 3)
+          value += lever * (1 - xi);
+        else if (j == 9)
+          value += lever * xi;
+        rows.add_entry(static_cast<std::size_t>(piece.unknowns[j]), -value);
+      }
+    }
+  }
+}
+
+void BeamRails::rates(double time, const double* u, const double* v, std::size_t n_rows,
+                      double* velocity, double* acceleration) {
+  rates_by_differences(*this, time, 1e-3 / std::max(speed_, 1e-9), u, v, n_rows, velocity,
+                       acceleration);
+}
+
+std::array<double, 3> BeamRails::rail_displacement(int k, double time, const double* u) {
+  ConstraintRows rows;
+  rows_at(time, rows);
+  std::array<double, 3> d{};
+  for (int i = 0; i < 3; ++i) {
+    const std::size_t r = 3 * k + i;
+    for (std::size_t e = rows.offsets[r]; e < rows.offsets[r + 1]; ++e)
+      if (rows.columns[e] < offset_)
+        d[i] -= rows.values[e] * u[rows.columns[e]];
+  }
+  return d;
+}
+
+}  // namespace railfe

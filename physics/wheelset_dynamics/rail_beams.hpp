@@ -1,0 +1,103 @@
+#pragma once
+/// \file
+/// Flexible rails for the wheelset: each rail a line of beam elements along the track (x = s
+/// from 0 to the rails' length) on discrete rail seats, each seat a spring–damper to the ground
+/// along x, y, z and about x (roll). RailBeams holds the sparse M, C, K of both rails;
+/// BeamRails ties every contact point's internal node to the rail beneath it: the node's
+/// (x, y, z) equals the beam's translation at s = start + V t, plus the rail's roll θ_x times
+/// the contact point's lever about the beam axis, plus the irregularities. The rail profile is
+/// carried rigidly (its roll moves the contact point, it does not turn the profile). Axes are
+/// the track's: x along, y to the right, z down (docs/theory.md, "Rails on beams").
+
+#include <Eigen/Sparse>
+
+#include <array>
+#include <functional>
+
+#include "framework/time/constraint_set.hpp"
+#include "physics/implicit/moving_contact.hpp"
+#include "physics/wheelset_dynamics/wheelset_system.hpp"
+
+namespace railfe {
+
+/// The rails' beams and seats.
+struct RailBeamLayout {
+  BeamMaterial material;      ///< the rail steel
+  BeamSection section;        ///< local y = track y (lateral), local z = track z (vertical)
+  double length = 0;          ///< each rail's length from s = 0 (m), a whole number of spans
+  double seat_spacing = 0.6;  ///< distance between rail seats (m); seats at s = 0, a, 2a, …
+  int elements_per_span = 4;  ///< beam elements between two seats
+  std::array<double, 4> seat_stiffness{};  ///< per seat along x, y, z (N/m) and roll (N m/rad)
+  std::array<double, 4> seat_damping{};    ///< per seat along x, y, z (N s/m), roll (N m s/rad)
+  double axis_depth = 0;                   ///< the beam axis below the rail's top (m)
+  BeamMass mass = BeamMass::consistent;    ///< how the beams' mass is formed
+};
+
+/// Both rails' matrices and paths (right rail first, its unknowns first).
+class RailBeams {
+ public:
+  /// The rails of \p layout whose axes lie at lateral positions \p axis_y (right, left) and
+  /// depths \p axis_z (z of each axis). Throws std::invalid_argument for a length that is not
+  /// a whole number of spans, or a seat stiffness that is not positive (a rail free to move).
+  RailBeams(const RailBeamLayout& layout, std::array<double, 2> axis_y,
+            std::array<double, 2> axis_z);
+  /// Number of unknowns (6 per node, both rails).
+  std::size_t n_unknowns() const { return n_unknowns_; }
+  /// M (consistent or lumped beam mass).
+  const Eigen::SparseMatrix<double>& mass() const { return mass_; }
+  /// C (the seats' dampers).
+  const Eigen::SparseMatrix<double>& damping() const { return damping_; }
+  /// K (beams and seats).
+  const Eigen::SparseMatrix<double>& stiffness() const { return stiffness_; }
+  /// The beam path of \p side (s = x).
+  const BeamPath& path(TrackSide side) const { return paths_[index(side)]; }
+  /// The axis of \p side in the cross-section: {y, z}.
+  std::array<double, 2> axis(TrackSide side) const {
+    return {axis_y_[index(side)], axis_z_[index(side)]};
+  }
+  /// Unknown of u_z at the seat nearest \p s on \p side (for probes).
+  long vertical_unknown_near(TrackSide side, double s) const;
+
+ private:
+  static int index(TrackSide side) { return side == TrackSide::right ? 0 : 1; }
+  std::size_t n_unknowns_ = 0;
+  int nodes_per_rail_ = 0;
+  double element_length_ = 0;
+  Eigen::SparseMatrix<double> mass_, damping_, stiffness_;
+  std::vector<BeamPath> paths_;  // right, left
+  std::array<double, 2> axis_y_, axis_z_;
+};
+
+/// The internal nodes of the wheelset's four contact points tied to the rail beams (see the
+/// file comment); the vehicle's unknowns follow the rails' in the coupled system.
+class BeamRails : public ConstraintSet {
+ public:
+  /// Ties for \p rails (not owned) with the wheelset's unknowns from \p vehicle_offset, the
+  /// irregularities \p lateral and \p vertical (functions of s, either may be empty: zero; right
+  /// and down), the wheelset at s = \p start + \p speed t.
+  BeamRails(const RailBeams& rails, std::size_t vehicle_offset,
+            std::function<double(double)> lateral, std::function<double(double)> vertical,
+            double start, double speed);
+  /// Takes each contact point's rail point as the lever of the rail's roll for the rows written
+  /// from now on (the rows stay fixed within a step: the levers are the last accepted ones).
+  void set_levers(const std::array<ContactState, n_wheelset_contacts>& states);
+  /// Three rows per internal node; throws RunError when s leaves the rails.
+  void rows_at(double time, ConstraintRows& rows) override;
+  /// By central differences of the rows over ±1 mm of s (rates_by_differences()).
+  void rates(double time, const double* u, const double* v, std::size_t n_rows, double* velocity,
+             double* acceleration) override;
+  /// Lateral and vertical irregularity at \p time.
+  std::array<double, 2> offsets(double time) const;
+  /// The rail's displacement (x, y, z) under contact point \p k at \p time for the rails'
+  /// unknowns \p u: the internal node's position less the irregularities.
+  std::array<double, 3> rail_displacement(int k, double time, const double* u);
+
+ private:
+  const RailBeams& rails_;
+  std::size_t offset_;
+  std::function<double(double)> lateral_, vertical_;
+  double start_, speed_;
+  std::array<std::array<double, 2>, n_wheelset_contacts> levers_{};  // {y, z} per point
+};
+
+}  // namespace railfe
