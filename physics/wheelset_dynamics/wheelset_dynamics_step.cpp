@@ -340,6 +340,12 @@ void WheelsetDynamicsStep::run(StepContext& context) {
         {"lateral", CsvWriter::format(measure.period), CsvWriter::format(measure.period * V),
          CsvWriter::format(measure.amplitude), CsvWriter::format(measure.growth_per_cycle),
          std::to_string(measure.cycles)});
+  CsvWriter cycles(context.output.staging_path(context.step_name + "_cycles.csv"),
+                   {"cycle", "start_s", "period_s", "wavelength_m", "amplitude_m"}, root);
+  for (std::size_t i = 0; i < oscillation.cycles().size(); ++i) {
+    const OscillationCycle& c = oscillation.cycles()[i];
+    cycles.write_row({static_cast<double>(i + 1), c.start, c.period, c.period * V, c.amplitude});
+  }
   history.flush();
   contacts.flush();
   if (p.get<bool>("Chart"))
