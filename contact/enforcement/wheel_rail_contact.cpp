@@ -294,9 +294,10 @@ void WheelRailContact::tangent(const ContactKinematics& state, const ContactStat
                                double* stiffness, double* damping) const {
   double base[9], shifted[9];
   internal_forces(at, state, base, base + 6);
-  // The seed's damping replaces the velocity columns: do not difference them first.
-  const bool seed_damping = settings_.kalker_damping && at.active && state.speed > 0;
-  for (int pass = 0; pass < (seed_damping ? 1 : 2); ++pass) {
+  // The velocities act through the creepages alone, which are linear in them: the damping
+  // comes from the creep theory's derivatives (creep_damping_matrix()), or is the seed's.
+  const bool rolling = at.active && state.speed > 0;
+  for (int pass = 0; pass < (rolling ? 1 : 2); ++pass) {
     double* matrix = pass == 0 ? stiffness : damping;
     for (int j = 0; j < 9; ++j) {
       if (j == 0 || j == 6) {
@@ -330,19 +331,24 @@ void WheelRailContact::tangent(const ContactKinematics& state, const ContactStat
         matrix[i * 9 + j] = (shifted[i] - base[i]) / step;
     }
   }
-  if (seed_damping)
-    kalker_damping_matrix(state, at, damping);
+  if (rolling) {
+    if (settings_.kalker_damping)
+      kalker_damping_matrix(state, at, damping);
+    else
+      creep_damping_matrix(state, at, damping);
+  }
 }
 
-void WheelRailContact::kalker_damping_matrix(const ContactKinematics& state, const ContactState& at,
-                                             double* damping) const {
+void WheelRailContact::creepage_rates(const ContactKinematics& state, const ContactState& at,
+                                      double J[3][9]) {
   const Vec3 n{0, at.point.normal.y, at.point.normal.z};
   const Vec3 t{0, at.point.normal.z, -at.point.normal.y};
   const Vec3 x{1, 0, 0}, ez{0, 0, 1};
   const Vec3 axle = axle_direction(state.wheelset_u[3], state.wheelset_u[5]);
   const Vec3& r = at.position;
-  // J: the rates of (Δv·x, Δv·t, ω·n) per unknown rate (wheelset 6, node 3).
-  double J[3][9] = {};
+  for (int k = 0; k < 3; ++k)
+    for (int i = 0; i < 9; ++i)
+      J[k][i] = 0;
   const Vec3 directions[2] = {x, t};
   const Vec3 swept[3] = {cross(x, r), cross(axle, r), cross(ez, r)};
   for (int row = 0; row < 2; ++row) {
@@ -355,6 +361,38 @@ void WheelRailContact::kalker_damping_matrix(const ContactKinematics& state, con
   J[2][3] = dot(x, n);
   J[2][4] = dot(axle, n);
   J[2][5] = dot(ez, n);
+}
+
+void WheelRailContact::creep_damping_matrix(const ContactKinematics& state, const ContactState& at,
+                                            double* damping) const {
+  double J[3][9];
+  creepage_rates(state, at, J);
+  // ∂F/∂c by forward differences; steps of 1e-7 in the creepages (ξ, η ~ 1e-3, φ ~ 0.1 1/m).
+  const double steps[3] = {1e-7, 1e-7, 1e-6};
+  double dF[3][3];
+  for (int l = 0; l < 3; ++l) {
+    Creepages moved = at.creepage;
+    (l == 0 ? moved.longitudinal : l == 1 ? moved.lateral : moved.spin) += steps[l];
+    const CreepForces f = creep_forces(at.hertz, moved, state.speed);
+    dF[0][l] = (f.Fx - at.creep.Fx) / steps[l];
+    dF[1][l] = (f.Fy - at.creep.Fy) / steps[l];
+    dF[2][l] = (f.Mz - at.creep.Mz) / steps[l];
+  }
+  // f_int = −Jᵀ F and c = J v / V: ∂f_int/∂v = −Jᵀ (∂F/∂c) J / V.
+  for (int i = 0; i < 9; ++i)
+    for (int j = 0; j < 9; ++j) {
+      double sum = 0;
+      for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l)
+          sum += J[k][i] * dF[k][l] * J[l][j];
+      damping[i * 9 + j] = -sum / state.speed;
+    }
+}
+
+void WheelRailContact::kalker_damping_matrix(const ContactKinematics& state, const ContactState& at,
+                                             double* damping) const {
+  double J[3][9];
+  creepage_rates(state, at, J);
   const KalkerCoefficients c = KalkerTable::shipped().at(at.hertz.a, at.hertz.b, poisson_);
   const auto D = kalker_damping(c, shear_modulus_, at.hertz.a, at.hertz.b, state.speed);
   // f_int = −Jᵀ F and F = −D J v (+ constants), so C = Jᵀ D J.

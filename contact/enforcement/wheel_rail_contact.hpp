@@ -133,9 +133,17 @@ class WheelRailContact {
   /// computed afresh, or (\p shape given, for the tangent) scaled from \p shape to the approach.
   ContactState forces_at(const ContactKinematics& state, const ContactPoint& point,
                          const HertzContact* shape) const;
+  /// J: the rates of the slip numerators (Δv·x, Δv·t, ω·n) per unknown rate (wheelset 6,
+  /// node 3) at \p at; the creepages are J v / V plus terms without velocities.
+  static void creepage_rates(const ContactKinematics& state, const ContactState& at,
+                             double J[3][9]);
   /// Jᵀ D J of Kalker's linear theory at \p at (9 × 9, row-major) into \p damping.
   void kalker_damping_matrix(const ContactKinematics& state, const ContactState& at,
                              double* damping) const;
+  /// The creep forces' exact share of ∂f_int/∂v at \p at: −Jᵀ (∂F/∂c) J / V, ∂F/∂c
+  /// (F = Fx, Fy, Mz; c the creepages) by forward differences of the creep theory alone.
+  void creep_damping_matrix(const ContactKinematics& state, const ContactState& at,
+                            double* damping) const;
   /// Creep forces of \p theory for \p hertz and \p creep.
   CreepForces creep_forces(const HertzContact& hertz, const Creepages& creep, double speed) const;
 

@@ -115,14 +115,25 @@ TEST(WheelRailContact, TangentMatchesCentralDifferences) {
     ASSERT_TRUE(at.active);
     double stiffness[81], damping[81];
     contact.tangent(state, at, stiffness, damping);
-    // Central differences with a larger step over the vertical position and the lateral velocity.
-    for (int pass = 0; pass < 2; ++pass) {
-      const int j = pass == 0 ? 2 : 1;
+    // Central differences with a larger step over the vertical position and over every
+    // velocity (the damping comes from the creepages' rates J, which must be the rates of the
+    // creepages the forces take).
+    for (int column = 0; column < 10; ++column) {
+      const int pass = column == 0 ? 0 : 1;
+      const int j = pass == 0 ? 2 : column - 1;
       const double h = pass == 0 ? 1e-7 : 1e-4;
       double plus[9], minus[9];
       ContactKinematics up = state, down = state;
-      (pass == 0 ? up.wheelset_u : up.wheelset_v)[j] += h;
-      (pass == 0 ? down.wheelset_u : down.wheelset_v)[j] -= h;
+      auto rate = [j](ContactKinematics& k) -> double& {
+        return j < 6 ? k.wheelset_v[j] : k.node_v[j - 6];
+      };
+      if (pass == 0) {
+        up.wheelset_u[j] += h;
+        down.wheelset_u[j] -= h;
+      } else {
+        rate(up) += h;
+        rate(down) -= h;
+      }
       WheelRailContact::internal_forces(contact.evaluate(up), up, plus, plus + 6);
       WheelRailContact::internal_forces(contact.evaluate(down), down, minus, minus + 6);
       const double* matrix = pass == 0 ? stiffness : damping;
@@ -131,7 +142,7 @@ TEST(WheelRailContact, TangentMatchesCentralDifferences) {
         scale = std::max(scale, std::abs(matrix[i * 9 + j]));
       for (int i = 0; i < 9; ++i)
         EXPECT_NEAR(matrix[i * 9 + j], (plus[i] - minus[i]) / (2 * h), 2e-4 * scale)
-            << creep_theory_name(theory) << " pass " << pass << " row " << i;
+            << creep_theory_name(theory) << " pass " << pass << " column " << j << " row " << i;
     }
   }
 }

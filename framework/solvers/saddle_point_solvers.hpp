@@ -13,8 +13,9 @@
 ///    the Schur complement S = C_s A_s⁻¹ C_sᵀ + C_v A_v⁻¹ C_vᵀ (n_c × n_c) gives μ. Where A_v
 ///    alone is singular (a massless vehicle point) the bordered
 ///    [A_v C_vᵀ; C_v −C_s A_s⁻¹ C_sᵀ] is factored instead.
-///  - MonolithicSaddlePointSolver: the whole saddle-point matrix assembled and factored by
-///    UMFPACK (sparse LU) at every factor(): the reference and fallback.
+///  - MonolithicSaddlePointSolver: the whole saddle-point matrix assembled and factored at
+///    every factor(), by UMFPACK (sparse LU), or by a dense LU with partial pivoting up to
+///    MonolithicSaddlePointSolver::kDenseLimit rows (a wheelset): the reference and fallback.
 /// Both check every solution's normwise backward error and throw RunError above the limit.
 
 #include <Eigen/Dense>
@@ -87,6 +88,8 @@ class MonolithicSaddlePointSolver : public SaddlePointSolver {
               const ConstraintRows& rows) override;
   /// Solves and checks the backward error against the assembled matrix.
   void solve(const double* r, const double* r_c, double* x, double* mu) override;
+  /// Saddle-point matrices of at most this many rows are factored densely.
+  static constexpr Eigen::Index kDenseLimit = 100;
   /// The counters so far.
   const SaddlePointStatistics& statistics() const { return statistics_; }
 
@@ -99,6 +102,8 @@ class MonolithicSaddlePointSolver : public SaddlePointSolver {
   double norm_infinity_ = 0;
   bool analyzed_ = false;
   Eigen::UmfPackLU<Eigen::SparseMatrix<double>> lu_;
+  bool dense_ = false;  // factored densely (small matrices)
+  Eigen::PartialPivLU<Eigen::MatrixXd> dense_lu_;
   SaddlePointStatistics statistics_;
 };
 
