@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 namespace railfe {
 
@@ -34,7 +35,7 @@ double curvature_ratio(double g) {
 // curvature_ratio(e^x) = r, which falls monotonically in x. Bracketed around the classical
 // estimate g ≈ r^(-2/3), then false position with the Illinois modification (superlinear, about
 // ten evaluations instead of bisection's fifty) down to the same 1e-15 in x.
-double axis_ratio(double r) {
+double bracketed_axis_ratio(double r) {
   if (r <= 1)
     return 1;
   auto f = [r](double x) { return curvature_ratio(std::exp(x)) - r; };
@@ -73,6 +74,52 @@ double axis_ratio(double r) {
       return std::exp(x);
   }
   return std::exp(0.5 * (lo + hi));
+}
+
+// log g against log r at steps of 0.01 up to r = 1e8, from bracketed_axis_ratio(): a start
+// within about 1e-5 of the root, from which the secant method needs three or four evaluations.
+constexpr double kTableStep = 0.01;
+constexpr int kTableSize = 1843;  // log(1e8) / 0.01 + 1
+
+const std::vector<double>& axis_ratio_table() {
+  static const std::vector<double> table = [] {
+    std::vector<double> t(kTableSize);
+    for (int i = 0; i < kTableSize; ++i)
+      t[i] = std::log(bracketed_axis_ratio(std::exp(i * kTableStep)));
+    return t;
+  }();
+  return table;
+}
+
+// The root of bracketed_axis_ratio() by the secant method from the table's start (Hertz is
+// evaluated at every contact point of every Newton iteration); the bracketed search where the
+// table ends or the secant does not settle.
+double axis_ratio(double r) {
+  if (r <= 1)
+    return 1;
+  const double t = std::log(r) / kTableStep;
+  if (!(t < kTableSize - 1))
+    return bracketed_axis_ratio(r);
+  const auto& table = axis_ratio_table();
+  const int i = static_cast<int>(t);
+  const double w = t - i;
+  auto f = [r](double x) { return curvature_ratio(std::exp(x)) - r; };
+  double x0 = (1 - w) * table[i] + w * table[i + 1], x1 = x0 - 1e-7;
+  double f0 = f(x0), f1 = f(x1);
+  for (int k = 0; k < 8; ++k) {
+    if (f1 == 0)
+      return std::exp(x1);
+    if (f1 == f0)
+      break;
+    const double x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
+    if (!(x2 < 0) || !std::isfinite(x2))
+      break;
+    if (std::abs(x2 - x1) <= 1e-15)
+      return std::exp(x2);
+    x0 = x1, f0 = f1;
+    x1 = x2, f1 = f(x2);
+  }
+  return bracketed_axis_ratio(r);
 }
 
 // Completes a contact whose A, B, load and semi-axes are set.
