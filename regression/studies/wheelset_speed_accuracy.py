@@ -62,11 +62,11 @@ def deck(theory="table", yaw="neglected", step=0.001, speed=30, amplitude=0.004,
 
 def run(railfe, work, theory, yaw, step):
     name = "%s_%s_%g" % (theory, yaw, step)
-    deck = os.path.join(work, name + ".xml")
-    with open(deck, "w") as f:
+    path = os.path.join(work, name + ".xml")
+    with open(path, "w") as f:
         f.write(deck(theory, yaw, step))
     out = os.path.join(work, name)
-    subprocess.run([railfe, deck, "--output", out, "--quiet"], check=True)
+    subprocess.run([railfe, path, "--output", out, "--quiet"], check=True)
     summary = json.load(open(os.path.join(out, "summary.json")))
     section = next(v for k, v in summary.items() if "wheelset dynamics" in k)
     peak_force = peak_shift = 0.0
