@@ -32,17 +32,17 @@ RailBeams::RailBeams(const RailBeamLayout& layout, std::array<double, 2> axis_y,
           "every seat stiffness (x, y, z, roll) must be positive, else the rails are free to "
           "move");
   const int n_elements = static_cast<int>(n_spans) * layout.elements_per_span;
-  nodes_per_rail_ = n_elements + 1;
-  element_length_ = layout.length / n_elements;
-  n_unknowns_ = static_cast<std::size_t>(2 * 6 * nodes_per_rail_);
+  const int nodes_per_rail = n_elements + 1;
+  const double element_length = layout.length / n_elements;
+  n_unknowns_ = static_cast<std::size_t>(2 * 6 * nodes_per_rail);
   std::vector<Eigen::Triplet<double>> k, m, c;
   const Eigen::Vector3d lateral(0, 1, 0);
   for (int rail = 0; rail < 2; ++rail) {
-    const long first = 6L * nodes_per_rail_ * rail;
+    const long first = 6L * nodes_per_rail * rail;
     std::vector<PathElement> path;
     for (int e = 0; e < n_elements; ++e) {
-      const Eigen::Vector3d a(e * element_length_, axis_y[rail], axis_z[rail]);
-      const Eigen::Vector3d b((e + 1) * element_length_, axis_y[rail], axis_z[rail]);
+      const Eigen::Vector3d a(e * element_length, axis_y[rail], axis_z[rail]);
+      const Eigen::Vector3d b((e + 1) * element_length, axis_y[rail], axis_z[rail]);
       const BeamElement beam(a, b, lateral, layout.material, layout.section, true);
       const Matrix12 ke = beam.stiffness(), me = beam.mass(layout.mass);
       std::array<long, 12> dofs;
@@ -76,9 +76,31 @@ RailBeams::RailBeams(const RailBeamLayout& layout, std::array<double, 2> axis_y,
   damping_.setFromTriplets(c.begin(), c.end());
 }
 
-long RailBeams::vertical_unknown_near(TrackSide side, double s) const {
-  const long node = std::lround(std::clamp(s / element_length_, 0.0, nodes_per_rail_ - 1.0));
-  return 6L * nodes_per_rail_ * index(side) + 6 * node + 2;
+RailBeams::RailBeams(const RailSpringLayout& layout, std::array<double, 2> axis_y,
+                     std::array<double, 2> axis_z)
+    : axis_y_(axis_y), axis_z_(axis_z) {
+  for (double k : layout.stiffness)
+    if (!(k > 0))
+      throw std::invalid_argument(
+          "every spring stiffness (y, z, roll) must be positive, else the rails are free to "
+          "move");
+  if (layout.mass < 0 || layout.roll_inertia < 0)
+    throw std::invalid_argument("the rails' mass and roll inertia must not be negative");
+  n_unknowns_ = 6;
+  const auto n = static_cast<Eigen::Index>(n_unknowns_);
+  stiffness_.resize(n, n);
+  mass_.resize(n, n);
+  damping_.resize(n, n);
+  const double masses[3] = {layout.mass, layout.mass, layout.roll_inertia};
+  for (int rail = 0; rail < 2; ++rail)
+    for (int c = 0; c < 3; ++c) {
+      const Eigen::Index i = 3 * rail + c;
+      stiffness_.insert(i, i) = layout.stiffness[c];
+      if (masses[c] > 0)
+        mass_.insert(i, i) = masses[c];
+      if (layout.damping[c] > 0)
+        damping_.insert(i, i) = layout.damping[c];
+    }
 }
 
 BeamRails::BeamRails(const RailBeams& rails, std::size_t vehicle_offset,
@@ -107,6 +129,21 @@ std::array<double, 2> BeamRails::offsets(double time) const {
 void BeamRails::rows_at(double time, ConstraintRows& rows) {
   const double s = start_ + speed_ * time;
   const auto offset = offsets(time);
+  if (rails_.on_springs()) {
+    // The rails move with the wheelset: no x, and y, z and roll are the rails' own unknowns.
+    for (int k = 0; k < n_wheelset_contacts; ++k)
+      for (int i = 0; i < 3; ++i) {
+        rows.start_row(i == 0 ? 0.0 : offset[i - 1]);
+        rows.add_entry(offset_ + 6 + 3 * k + i, 1.0);
+        if (i == 0)
+          continue;
+        rows.add_entry(static_cast<std::size_t>(rails_.point_unknown(kContactSide[k], i - 1)),
+                       -1.0);
+        rows.add_entry(static_cast<std::size_t>(rails_.point_unknown(kContactSide[k], 2)),
+                       -levers_[k][i - 1]);
+      }
+    return;
+  }
   for (int k = 0; k < n_wheelset_contacts; ++k) {
     const BeamPath& path = rails_.path(kContactSide[k]);
     std::size_t element;

@@ -6,8 +6,10 @@
 /// BeamRails ties every contact point's internal node to the rail beneath it: the node's
 /// (x, y, z) equals the beam's translation at s = start + V t, plus the rail's roll θ_x times
 /// the contact point's lever about the beam axis, plus the irregularities. The rail profile is
-/// carried rigidly (its roll moves the contact point, it does not turn the profile). Axes are
-/// the track's: x along, y to the right, z down (docs/theory.md, "Rails on beams").
+/// carried rigidly (its roll moves the contact point, it does not turn the profile). The same
+/// class holds rails on springs: a rigid body per rail that moves with the wheelset, its y, z and
+/// roll on springs to the ground. Axes are the track's: x along, y to the right, z down
+/// (docs/theory.md, "Rails on beams").
 
 #include <Eigen/Sparse>
 
@@ -33,9 +35,23 @@ struct RailBeamLayout {
   BeamMass mass = BeamMass::consistent;    ///< how the beams' mass is formed
 };
 
+/// Rails on springs: each rail a rigid body under the wheelset that moves with it, displaced
+/// along y and z and rolled about its axis, on springs and dampers to the ground.
+struct RailSpringLayout {
+  double mass = 0;                    ///< each rail's participating mass (kg)
+  double roll_inertia = 0;            ///< about its axis (kg m²)
+  std::array<double, 3> stiffness{};  ///< along y, z (N/m) and roll (N m/rad), per rail
+  std::array<double, 3> damping{};    ///< along y, z (N s/m) and roll (N m s/rad), per rail
+  double axis_depth = 0;              ///< the roll axis below the rail's top (m)
+};
+
 /// Both rails' matrices and paths (right rail first, its unknowns first).
 class RailBeams {
  public:
+  /// Rails on springs (see RailSpringLayout): 3 unknowns per rail (y, z, roll). Throws
+  /// std::invalid_argument for a stiffness that is not positive or a negative mass.
+  RailBeams(const RailSpringLayout& layout, std::array<double, 2> axis_y,
+            std::array<double, 2> axis_z);
   /// The rails of \p layout whose axes lie at lateral positions \p axis_y (right, left) and
   /// depths \p axis_z (z of each axis). Throws std::invalid_argument for a length that is not
   /// a whole number of spans, or a seat stiffness that is not positive (a rail free to move).
@@ -49,20 +65,20 @@ class RailBeams {
   const Eigen::SparseMatrix<double>& damping() const { return damping_; }
   /// K (beams and seats).
   const Eigen::SparseMatrix<double>& stiffness() const { return stiffness_; }
-  /// The beam path of \p side (s = x).
+  /// Whether the rails are rigid bodies on springs (no paths; point_unknown()).
+  bool on_springs() const { return paths_.empty(); }
+  /// The beam path of \p side (s = x); beams only.
   const BeamPath& path(TrackSide side) const { return paths_[index(side)]; }
+  /// Rails on springs: the unknown of \p side's y (0), z (1) or roll (2).
+  long point_unknown(TrackSide side, int component) const { return 3L * index(side) + component; }
   /// The axis of \p side in the cross-section: {y, z}.
   std::array<double, 2> axis(TrackSide side) const {
     return {axis_y_[index(side)], axis_z_[index(side)]};
   }
-  /// Unknown of u_z at the seat nearest \p s on \p side (for probes).
-  long vertical_unknown_near(TrackSide side, double s) const;
 
  private:
   static int index(TrackSide side) { return side == TrackSide::right ? 0 : 1; }
   std::size_t n_unknowns_ = 0;
-  int nodes_per_rail_ = 0;
-  double element_length_ = 0;
   Eigen::SparseMatrix<double> mass_, damping_, stiffness_;
   std::vector<BeamPath> paths_;  // right, left
   std::array<double, 2> axis_y_, axis_z_;

@@ -22,8 +22,8 @@ std::array<double, 2> residual(WheelsetSystem& system, const std::vector<double>
 }  // namespace
 
 WheelsetBalance balance_wheelset(WheelsetSystem& system, const WheelRailGeometry& geometry,
-                                 std::vector<double>& u) {
-  system.set_rolling(false);
+                                 std::vector<double>& u, bool rolling) {
+  system.set_rolling(rolling);
   // Rails' offsets are the same for all internal nodes: take the right tread's.
   const double rail_y = u[6 + 1], rail_z = u[6 + 2];
   const double relative = u[1] - rail_y;
@@ -107,7 +107,7 @@ WheelsetBalance balance_on_rail_beams(WheelsetSystem& system, const WheelRailGeo
     }
     if (round > 0 && moved <= 1e-13)
       break;
-    const WheelsetBalance wheelset = balance_wheelset(system, geometry, uv);
+    const WheelsetBalance wheelset = balance_wheelset(system, geometry, uv, rolling);
     balance.iterations += wheelset.iterations;
     balance.residual = wheelset.residual;
     balance.weight = wheelset.weight;
@@ -115,7 +115,6 @@ WheelsetBalance balance_on_rail_beams(WheelsetSystem& system, const WheelRailGeo
     rows.clear();
     rails.rows_at(0, rows);
     // The nodes carry no load of their own: f_int + Cᵀλ = 0 on each (its entry is 1).
-    system.set_rolling(rolling);
     system.internal_force(uv.data(), zero.data(), force.data());
     for (std::size_t r = 0; r < lambda.size(); ++r)
       lambda[r] = -force[6 + r];

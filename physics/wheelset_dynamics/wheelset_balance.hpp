@@ -20,11 +20,12 @@ struct WheelsetBalance {
 };
 
 /// Moves u[2] (vertical) and u[3] (roll) of \p u, whose other entries hold the pose and the
-/// internal nodes' rail offsets, until the contact forces balance the external ones (creep
-/// forces off). Starts from the rigid contact of the profiles. Throws RunError when the
-/// wheelset cannot be placed (no contact found) or Newton fails.
+/// internal nodes' rail offsets, until the contact forces balance the external ones: creep
+/// forces off, or with \p rolling those of steady rolling at the system's spin. Starts from the
+/// rigid contact of the profiles. Throws RunError when the wheelset cannot be placed (no contact
+/// found) or Newton fails.
 WheelsetBalance balance_wheelset(WheelsetSystem& system, const WheelRailGeometry& geometry,
-                                 std::vector<double>& u);
+                                 std::vector<double>& u, bool rolling = false);
 
 /// The static balance on flexible rails, by rounds: balance_wheelset() on the rails' present
 /// shape, then the rails under that balance's contact forces, until the rails under the contacts

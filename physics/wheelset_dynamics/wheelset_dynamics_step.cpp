@@ -75,6 +75,8 @@ void WheelsetDynamicsStep::check(const CheckContext& context) {
     throw_input_error(context.source(), context.path + "/Time step", "is longer than End time",
                       "at most End time");
   const auto& rails = parameters_->sublist("Rails");
+  if (rails.get<std::string>("Model") == "springs")
+    rail_spring_layout(rails, context.source(), context.path + "/Rails");
   if (rails.get<std::string>("Model") == "beams") {
     const std::string path = context.path + "/Rails";
     const RailBeamLayout layout = rail_beam_layout(rails, context.source(), path);

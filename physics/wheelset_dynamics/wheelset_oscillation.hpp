@@ -39,8 +39,8 @@ class OscillationMeter {
     if (events_.crossings > crossings) {
       if (events_.crossings > 1) {
         peaks_.push_back(peak_);
-        cycles_.push_back({crossed_before, events_.last_crossing - crossed_before,
-                           0.5 * (peak_ - trough_)});
+        cycles_.push_back(
+            {crossed_before, events_.last_crossing - crossed_before, 0.5 * (peak_ - trough_)});
       }
       peak_ = trough_ = 0;
     }
@@ -65,7 +65,7 @@ class OscillationMeter {
  private:
   HistoryEvents events_;
   double peak_ = 0, trough_ = 0;  // of the cycle under way
-  std::vector<double> peaks_;      // the positive peak of each full cycle
+  std::vector<double> peaks_;     // the positive peak of each full cycle
   std::vector<OscillationCycle> cycles_;
 };
 

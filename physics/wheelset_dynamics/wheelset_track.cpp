@@ -16,13 +16,17 @@ ParameterSpec track_rail_parameters() {
   ParameterSpec spec("The rails under the wheelset.");
   spec.choice("Model", "rigid",
               {{"rigid", "rigid lines that follow the irregularities"},
+               {"springs",
+                "a rigid body per rail under the wheelset, moving with it, on springs and "
+                "dampers along y, z and about its axis"},
                {"beams", "a beam per rail on rail seats, each a spring-damper to the ground"}},
               "How the rails move.");
   spec.choice("Section", "60E1",
               {{"60E1", "from the EN 13674-1 drawing (A, I and centroid computed)"},
                {"54E1", "from the EN 13674-1 drawing"},
                {"custom", "Area, bending inertias and Axis depth as given"}},
-              "The rail's cross-section.");
+              "The rail's cross-section: beams take A, the I and the centroid (their axis); "
+              "springs the centroid alone, as the roll axis.");
   spec.real("Area", 0, "Cross-section area.", "m^2", Range::non_negative());
   spec.real("Vertical bending inertia", 0, "About the horizontal axis.", "m^4",
             Range::non_negative());
@@ -58,15 +62,63 @@ ParameterSpec track_rail_parameters() {
   spec.choice("Mass", "consistent",
               {{"consistent", "the beams' consistent mass"}, {"lumped", "HRZ-lumped"}},
               "The rails' mass matrix.");
-  spec.only_when("Model", {"beams"},
-                 {"Section", "Area", "Vertical bending inertia", "Lateral bending inertia",
-                  "Axis depth", "Torsion constant", "Beam theory", "Shear areas", "Young's modulus",
-                  "Poisson's ratio", "Density", "Length", "Seat spacing", "Elements per span",
-                  "Seat stiffness", "Seat damping", "Mass"});
+  spec.real("Rail mass", 0, "Springs: each rail's mass moving with the wheelset (0: massless).",
+            "kg", Range::non_negative());
+  spec.real("Rail roll inertia", 0, "Springs: each rail's inertia about its axis.", "kg m^2",
+            Range::non_negative());
+  spec.real_array("Spring stiffness", {0, 0, 0},
+                  "Springs: per rail along y, z (N/m) and about its axis (N m/rad); all "
+                  "positive.",
+                  "N/m", 3, Range::non_negative());
+  spec.real_array("Spring damping", {0, 0, 0},
+                  "Springs: per rail along y, z (N s/m) and about its axis (N m s/rad).", "N s/m",
+                  3, Range::non_negative());
+  spec.only_when("Model", {"beams", "springs"}, {"Section", "Axis depth"});
+  spec.only_when(
+      "Model", {"beams"},
+      {"Area", "Vertical bending inertia", "Lateral bending inertia", "Torsion constant",
+       "Beam theory", "Shear areas", "Young's modulus", "Poisson's ratio", "Density", "Length",
+       "Seat spacing", "Elements per span", "Seat stiffness", "Seat damping", "Mass"});
+  spec.only_when("Model", {"springs"},
+                 {"Rail mass", "Rail roll inertia", "Spring stiffness", "Spring damping"});
   spec.only_when("Section", {"custom"},
                  {"Area", "Vertical bending inertia", "Lateral bending inertia", "Axis depth"});
   spec.only_when("Beam theory", {"timoshenko"}, {"Shear areas"});
   return spec;
+}
+
+namespace {
+
+// The centroid of the named drawing below its top (m).
+double drawing_axis_depth(const std::string& name) {
+  const RailOutline outline = rail_outline(name);
+  double top = -std::numeric_limits<double>::infinity();
+  for (const SectionPoint& point : sample_outline(outline, 1e-3))
+    top = std::max(top, point[1]);
+  return top - section_properties(outline).centroid[1];
+}
+
+}  // namespace
+
+RailSpringLayout rail_spring_layout(const Teuchos::ParameterList& rails, const std::string& source,
+                                    const std::string& path) {
+  RailSpringLayout layout;
+  layout.mass = rails.get<double>("Rail mass");
+  layout.roll_inertia = rails.get<double>("Rail roll inertia");
+  const auto stiffness = rails.get<Teuchos::Array<double>>("Spring stiffness");
+  const auto damping = rails.get<Teuchos::Array<double>>("Spring damping");
+  for (int d = 0; d < 3; ++d) {
+    layout.stiffness[d] = stiffness[d];
+    layout.damping[d] = damping[d];
+    if (!(stiffness[d] > 0))
+      throw_input_error(source, path + "/Spring stiffness",
+                        "has a zero entry: a rail free to move along that direction cannot "
+                        "carry a load",
+                        "three positive stiffnesses (y, z in N/m, roll in N m/rad)");
+  }
+  const std::string name = rails.get<std::string>("Section");
+  layout.axis_depth = name == "custom" ? rails.get<double>("Axis depth") : drawing_axis_depth(name);
+  return layout;
 }
 
 RailBeamLayout rail_beam_layout(const Teuchos::ParameterList& rails, const std::string& source,
@@ -87,15 +139,11 @@ RailBeamLayout rail_beam_layout(const Teuchos::ParameterList& rails, const std::
         throw_input_error(source, path + "/" + key, "must be given with Section custom",
                           "a positive value");
   } else {
-    const RailOutline outline = rail_outline(name);
-    const SectionProperties properties = section_properties(outline);
-    double top = -std::numeric_limits<double>::infinity();
-    for (const SectionPoint& point : sample_outline(outline, 1e-3))
-      top = std::max(top, point[1]);
+    const SectionProperties properties = section_properties(rail_outline(name));
     section.area = properties.area;
     section.iy = properties.inertia_horizontal;
     section.iz = properties.inertia_vertical;
-    layout.axis_depth = top - properties.centroid[1];
+    layout.axis_depth = drawing_axis_depth(name);
   }
   section.torsion = rails.get<double>("Torsion constant");
   if (!(section.torsion > 0))
@@ -159,19 +207,25 @@ WheelsetTrack::WheelsetTrack(const Teuchos::ParameterList& rails, const std::str
       vertical_(std::move(vertical)),
       start_(start),
       speed_(speed) {
-  if (rails.get<std::string>("Model") != "beams") {
+  const std::string model = rails.get<std::string>("Model");
+  if (model == "rigid") {
     rigid_rails_ = std::make_unique<RigidRails>(lateral_, vertical_, start, speed);
     whole_ = &wheelset;
     constraints_ = rigid_rails_.get();
     saddle_ = std::make_unique<MonolithicSaddlePointSolver>(wheelset);
     return;
   }
-  const RailBeamLayout layout = rail_beam_layout(rails, source, path);
   const auto right = rail_top(geometry, TrackSide::right);
   const auto left = rail_top(geometry, TrackSide::left);
-  beams_ = std::make_unique<RailBeams>(
-      layout, std::array<double, 2>{right[0], left[0]},
-      std::array<double, 2>{right[1] + layout.axis_depth, left[1] + layout.axis_depth});
+  auto place = [&](const auto& layout) {
+    beams_ = std::make_unique<RailBeams>(
+        layout, std::array<double, 2>{right[0], left[0]},
+        std::array<double, 2>{right[1] + layout.axis_depth, left[1] + layout.axis_depth});
+  };
+  if (model == "springs")
+    place(rail_spring_layout(rails, source, path));
+  else
+    place(rail_beam_layout(rails, source, path));
   structure_ =
       std::make_unique<SparseLinearSystem>(beams_->mass(), beams_->damping(), beams_->stiffness());
   offset_ = structure_->n_unknowns();

@@ -1,8 +1,9 @@
 #pragma once
 /// \file
 /// The track a "wheelset dynamics" step runs on, as its deck's Rails list asks: rigid rails
-/// (the wheelset's equations alone, RigidRails), or a beam per rail on rail seats (RailBeams
-/// coupled to the wheelset, BeamRails, the block saddle-point solver). Either way the step sees
+/// (the wheelset's equations alone, RigidRails), a rigid body per rail on springs, or a beam per
+/// rail on rail seats (RailBeams coupled to the wheelset, BeamRails, the block saddle-point
+/// solver). Either way the step sees
 /// one system, one constraint set and one saddle-point solver, with the wheelset's unknowns
 /// from offset() on.
 
@@ -29,6 +30,11 @@ ParameterSpec track_rail_parameters();
 RailBeamLayout rail_beam_layout(const Teuchos::ParameterList& rails, const std::string& source,
                                 const std::string& path);
 
+/// The rails' springs from a Rails list whose Model is "springs"; input errors as
+/// rail_beam_layout().
+RailSpringLayout rail_spring_layout(const Teuchos::ParameterList& rails, const std::string& source,
+                                    const std::string& path);
+
 /// The track and the solver pieces that go with it (see the file comment).
 class WheelsetTrack {
  public:
@@ -40,7 +46,7 @@ class WheelsetTrack {
                 const std::string& path, const WheelRailGeometry& geometry,
                 WheelsetSystem& wheelset, std::function<double(double)> lateral,
                 std::function<double(double)> vertical, double start, double speed);
-  /// Whether the rails are beams.
+  /// Whether the rails move (springs or beams).
   bool flexible() const { return beams_ != nullptr; }
   /// The wheelset's first unknown in system().
   std::size_t offset() const { return offset_; }
@@ -62,7 +68,7 @@ class WheelsetTrack {
   /// Vertical displacement of the right and left rail under their tread points at \p time
   /// (m, down; 0 for rigid rails) for the whole system's \p u.
   std::array<double, 2> rail_deflection(double time, const double* u);
-  /// The rails' beams (flexible() only).
+  /// The rails' beams or springs (flexible() only).
   const RailBeams& beams() const { return *beams_; }
 
  private:
