@@ -1,6 +1,7 @@
 #include "framework/time/newton_step.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -134,6 +135,7 @@ void NewtonStepSolver::fail(const StepState& state, const std::string& failure) 
 }
 
 void NewtonStepSolver::solve_for_acceleration(const StepState& state, double* a) {
+  const auto started = std::chrono::steady_clock::now();
   if (constraints_ == nullptr) {
     iterate(state, a);
   } else {
@@ -159,6 +161,8 @@ void NewtonStepSolver::solve_for_acceleration(const StepState& state, double* a)
   ++statistics_.steps;
   statistics_.iterations += static_cast<std::size_t>(iterations);
   statistics_.most_iterations = std::max(statistics_.most_iterations, iterations);
+  statistics_.seconds +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 }
 
 void NewtonStepSolver::iterate(const StepState& state, double* a) {

@@ -61,13 +61,16 @@ class StepNotConverged : public RunError {
 
 /// Counters over the steps a solver has taken.
 struct NewtonStatistics {
-  std::size_t steps = 0;               ///< converged steps
-  std::size_t iterations = 0;          ///< Newton corrections over all converged steps
-  std::size_t factorizations = 0;      ///< factor() calls
-  std::size_t force_evaluations = 0;   ///< internal_force() calls
-  std::size_t restarts = 0;            ///< consistent restarts after a step (after_step())
-  int last_iterations = 0;             ///< corrections in the last converged step
-  int most_iterations = 0;             ///< most corrections in one converged step
+  std::size_t steps = 0;              ///< converged steps
+  std::size_t iterations = 0;         ///< Newton corrections over all converged steps
+  std::size_t factorizations = 0;     ///< factor() calls
+  std::size_t force_evaluations = 0;  ///< internal_force() calls
+  std::size_t restarts = 0;           ///< consistent restarts after a step (after_step())
+  int last_iterations = 0;            ///< corrections in the last converged step
+  int most_iterations = 0;            ///< most corrections in one converged step
+  /// Wall time of the converged steps' Newton solves (residuals, matrices, linear solves; not
+  /// the predictor or the output) (s).
+  double seconds = 0;
   std::vector<double> last_residuals;  ///< ‖R‖ at each iterate of the last attempt
 };
 

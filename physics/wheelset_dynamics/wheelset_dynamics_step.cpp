@@ -361,6 +361,9 @@ void WheelsetDynamicsStep::run(StepContext& context) {
                       statistics.steps ? double(statistics.iterations) / statistics.steps : 0.0);
   context.summary.add(section, "most Newton iterations in a step",
                       static_cast<double>(statistics.most_iterations));
+  context.summary.add(section, "wall time per Newton iteration (solve only)",
+                      statistics.iterations ? statistics.seconds / statistics.iterations : 0.0,
+                      "s");
   context.summary.add(section, "contact events", static_cast<double>(n_events));
   std::size_t jumps = 0, edges = 0;
   for (int k = 0; k < n_wheelset_contacts; ++k) {

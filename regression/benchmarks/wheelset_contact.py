@@ -4,8 +4,9 @@
 (tread and flange, warm started as between Newton iterations), the creep forces of one point by
 each theory, and the element's evaluation and tangent per point. Then runs a wheelset (4 potential
 contact points) over a lateral irregularity at 30 m/s, dt 1 ms, creep-force table, and reports
-the wall time per step and per Newton iteration, and the per-iteration estimate of a 4-wheelset
-vehicle on rigid track (16 points: 4 x the wheelset's contact work).
+the wall time per step and per Newton iteration (timed inside the Newton solver: residuals,
+matrices and saddle-point solves, not the predictor or the output), and the per-iteration
+estimate of a 4-wheelset vehicle on rigid track (16 points: 4 x the wheelset's iteration).
 Targets: search <= 20 us per wheel, creep forces <= 1 us per point by table, a Newton iteration
 of the 4-wheelset vehicle on rigid track <= 100 us. No reference program is on this machine, so
 the figures are absolute.
@@ -37,8 +38,9 @@ def wheelset_run(railfe):
             summary = json.load(open(out))
             section = next(v for k, v in summary.items() if "wheelset dynamics" in k)
             per_step = section["wall time per step [s]"]
+            per_iteration = section["wall time per Newton iteration (solve only) [s]"]
             if best is None or per_step < best[0]:
-                best = (per_step, row["iterations"])
+                best = (per_step, row["iterations"], per_iteration)
     return best
 
 
@@ -46,11 +48,13 @@ def main():
     bin_dir = sys.argv[1] if len(sys.argv) > 1 else os.path.join(tool_benchmark.ROOT, "build", "bin")
     out = os.path.join(tool_benchmark.ROOT, "docs", "data", "wheelset_contact_benchmark.csv")
     tool_benchmark.best_of_runs(os.path.join(bin_dir, "railfe-wheel-rail-benchmark"), out)
-    per_step, iterations = wheelset_run(os.path.join(bin_dir, "railfe"))
-    per_iteration = per_step / iterations
+    per_step, iterations, per_iteration = wheelset_run(os.path.join(bin_dir, "railfe"))
     rows = [("wheelset step (4 points, dt 1 ms, table)", per_step * 1e6, "us", ""),
             ("wheelset Newton iterations per step", iterations, "", ""),
-            ("wheelset Newton iteration (4 points)", per_iteration * 1e6, "us", ""),
+            ("wheelset step / Newton iterations (with the step's output)",
+             per_step / iterations * 1e6, "us", ""),
+            ("wheelset Newton iteration (4 points, timed inside the solver)",
+             per_iteration * 1e6, "us", ""),
             ("4-wheelset vehicle Newton iteration on rigid track, estimated (16 points)",
              4 * per_iteration * 1e6, "us", "100")]
     with open(out, "a", newline="") as f:
