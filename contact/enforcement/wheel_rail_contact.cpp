@@ -300,13 +300,19 @@ void WheelRailContact::tangent(const ContactKinematics& state, const ContactStat
   for (int pass = 0; pass < (rolling ? 1 : 2); ++pass) {
     double* matrix = pass == 0 ? stiffness : damping;
     for (int j = 0; j < 9; ++j) {
-      if (j == 0 || j == 6) {
-        // Along the track nothing changes with position (a straight, uniform rail).
-        if (pass == 0) {
-          for (int i = 0; i < 9; ++i)
-            matrix[i * 9 + j] = 0;
-          continue;
-        }
+      if (pass == 0 && (j == 0 || j == 6 || j == 4)) {
+        // Along the track nothing changes with position (a straight, uniform rail), nor with
+        // the spin angle (a wheel of revolution).
+        for (int i = 0; i < 9; ++i)
+          matrix[i * 9 + j] = 0;
+        continue;
+      }
+      if (pass == 0 && (j == 7 || j == 8)) {
+        // The forces see the node's y and z only through the wheelset's pose relative to it
+        // (relative_pose()): those columns are the wheelset's, negated.
+        for (int i = 0; i < 9; ++i)
+          matrix[i * 9 + j] = -matrix[i * 9 + (j - 6)];
+        continue;
       }
       ContactKinematics moved = state;
       double step = pass == 0 ? position_step : velocity_step;

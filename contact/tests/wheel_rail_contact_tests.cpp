@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "contact/enforcement/wheel_rail_contact.hpp"
 #include "contact/laws/creep_table.hpp"
@@ -115,35 +116,59 @@ TEST(WheelRailContact, TangentMatchesCentralDifferences) {
     ASSERT_TRUE(at.active);
     double stiffness[81], damping[81];
     contact.tangent(state, at, stiffness, damping);
-    // Central differences with a larger step over the vertical position and over every
-    // velocity (the damping comes from the creepages' rates J, which must be the rates of the
-    // creepages the forces take).
-    for (int column = 0; column < 10; ++column) {
-      const int pass = column == 0 ? 0 : 1;
-      const int j = pass == 0 ? 2 : column - 1;
-      const double h = pass == 0 ? 1e-7 : 1e-4;
-      double plus[9], minus[9];
-      ContactKinematics up = state, down = state;
-      auto rate = [j](ContactKinematics& k) -> double& {
-        return j < 6 ? k.wheelset_v[j] : k.node_v[j - 6];
-      };
-      if (pass == 0) {
-        up.wheelset_u[j] += h;
-        down.wheelset_u[j] -= h;
-      } else {
-        rate(up) += h;
-        rate(down) -= h;
+    // Central differences with a larger step of the full evaluation over every position and
+    // every velocity: fd[pass][j][i] = ∂f_i/∂(u or v)_j.
+    double fd[2][9][9], scale = 0;
+    for (int pass = 0; pass < 2; ++pass)
+      for (int j = 0; j < 9; ++j) {
+        const double h = pass == 0 ? 1e-7 : 1e-4;
+        double plus[9], minus[9];
+        ContactKinematics up = state, down = state;
+        auto entry = [pass, j](ContactKinematics& k) -> double& {
+          if (pass == 0)
+            return j < 6 ? k.wheelset_u[j] : k.node_u[j - 6];
+          return j < 6 ? k.wheelset_v[j] : k.node_v[j - 6];
+        };
+        entry(up) += h;
+        entry(down) -= h;
+        WheelRailContact::internal_forces(contact.evaluate(up), up, plus, plus + 6);
+        WheelRailContact::internal_forces(contact.evaluate(down), down, minus, minus + 6);
+        for (int i = 0; i < 9; ++i) {
+          fd[pass][j][i] = (plus[i] - minus[i]) / (2 * h);
+          scale = std::max(scale, std::abs(fd[pass][j][i]));
+        }
       }
-      WheelRailContact::internal_forces(contact.evaluate(up), up, plus, plus + 6);
-      WheelRailContact::internal_forces(contact.evaluate(down), down, minus, minus + 6);
-      const double* matrix = pass == 0 ? stiffness : damping;
-      double scale = 0;
+    const std::string name = creep_theory_name(theory);
+    auto column_scale = [](const double* matrix, int j) {
+      double s = 0;
       for (int i = 0; i < 9; ++i)
-        scale = std::max(scale, std::abs(matrix[i * 9 + j]));
+        s = std::max(s, std::abs(matrix[i * 9 + j]));
+      return s;
+    };
+    // The vertical position's column, and every velocity's (the damping comes from the
+    // creepages' rates J, which must be the rates of the creepages the forces take).
+    for (int i = 0; i < 9; ++i)
+      EXPECT_NEAR(stiffness[i * 9 + 2], fd[0][2][i], 2e-4 * column_scale(stiffness, 2))
+          << name << " position column 2 row " << i;
+    for (int j = 0; j < 9; ++j)
       for (int i = 0; i < 9; ++i)
-        EXPECT_NEAR(matrix[i * 9 + j], (plus[i] - minus[i]) / (2 * h), 2e-4 * scale)
-            << creep_theory_name(theory) << " pass " << pass << " column " << j << " row " << i;
-    }
+        EXPECT_NEAR(damping[i * 9 + j], fd[1][j][i],
+                    2e-4 * std::max(column_scale(damping, j), 1e-9 * scale))
+            << name << " velocity column " << j << " row " << i;
+    // The tangent takes no differences for x, the spin angle and the node's x (the forces do not
+    // depend on them) and takes the node's y and z columns as the wheelset's negated (the forces
+    // see them only through the relative pose): the full evaluation must agree.
+    for (int j : {0, 4, 6})
+      for (int i = 0; i < 9; ++i) {
+        EXPECT_EQ(stiffness[i * 9 + j], 0.0);
+        EXPECT_NEAR(fd[0][j][i], 0.0, 1e-9 * scale) << name << " position column " << j;
+      }
+    for (int j : {1, 2})
+      for (int i = 0; i < 9; ++i) {
+        EXPECT_EQ(stiffness[i * 9 + j + 6], -stiffness[i * 9 + j]);
+        EXPECT_NEAR(fd[0][j + 6][i], -fd[0][j][i], 1e-9 * scale)
+            << name << " node column " << j + 6 << " row " << i;
+      }
   }
 }
 
