@@ -102,7 +102,8 @@ class MonolithicSaddlePointSolver : public SaddlePointSolver {
   double norm_infinity_ = 0;
   bool analyzed_ = false;
   Eigen::UmfPackLU<Eigen::SparseMatrix<double>> lu_;
-  bool dense_ = false;  // factored densely (small matrices)
+  bool dense_ = false;  // assembled and factored densely (small matrices)
+  Eigen::MatrixXd dense_matrix_;
   Eigen::PartialPivLU<Eigen::MatrixXd> dense_lu_;
   SaddlePointStatistics statistics_;
 };
