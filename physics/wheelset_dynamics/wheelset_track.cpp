@@ -148,7 +148,7 @@ RailBeamLayout rail_beam_layout(const Teuchos::ParameterList& rails, const std::
   section.torsion = rails.get<double>("Torsion constant");
   if (!(section.torsion > 0))
     throw_input_error(source, path + "/Torsion constant", "must be given with rail beams",
-                      "a positive J, e.g. about 2e-6 m^4 for a 60 kg/m rail");
+                      "a positive J (m^4), from the rail's data");
   const bool timoshenko = rails.get<std::string>("Beam theory") == "timoshenko";
   const auto shear = rails.get<Teuchos::Array<double>>("Shear areas");
   if (timoshenko && !(shear[0] > 0 && shear[1] > 0))
