@@ -15,6 +15,18 @@ namespace {
 
 using Vec3 = std::array<double, 3>;
 
+// out (9 × 9, row-major) = scale · Jᵀ D J for J (3 × 9) and D (3 × 3, row-major).
+void sandwich(const double J[3][9], const double* D, double scale, double* out) {
+  for (int i = 0; i < 9; ++i)
+    for (int j = 0; j < 9; ++j) {
+      double sum = 0;
+      for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l)
+          sum += J[k][i] * D[k * 3 + l] * J[l][j];
+      out[i * 9 + j] = scale * sum;
+    }
+}
+
 Vec3 cross(const Vec3& a, const Vec3& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
@@ -385,14 +397,9 @@ void WheelRailContact::creep_damping_matrix(const ContactKinematics& state, cons
     dF[2][l] = (f.Mz - at.creep.Mz) / steps[l];
   }
   // f_int = −Jᵀ F and c = J v / V: ∂f_int/∂v = −Jᵀ (∂F/∂c) J / V.
-  for (int i = 0; i < 9; ++i)
-    for (int j = 0; j < 9; ++j) {
-      double sum = 0;
-      for (int k = 0; k < 3; ++k)
-        for (int l = 0; l < 3; ++l)
-          sum += J[k][i] * dF[k][l] * J[l][j];
-      damping[i * 9 + j] = -sum / state.speed;
-    }
+  const double D[9] = {dF[0][0], dF[0][1], dF[0][2], dF[1][0], dF[1][1],
+                       dF[1][2], dF[2][0], dF[2][1], dF[2][2]};
+  sandwich(J, D, -1 / state.speed, damping);
 }
 
 void WheelRailContact::kalker_damping_matrix(const ContactKinematics& state, const ContactState& at,
@@ -402,14 +409,7 @@ void WheelRailContact::kalker_damping_matrix(const ContactKinematics& state, con
   const KalkerCoefficients c = KalkerTable::shipped().at(at.hertz.a, at.hertz.b, poisson_);
   const auto D = kalker_damping(c, shear_modulus_, at.hertz.a, at.hertz.b, state.speed);
   // f_int = −Jᵀ F and F = −D J v (+ constants), so C = Jᵀ D J.
-  for (int i = 0; i < 9; ++i)
-    for (int j = 0; j < 9; ++j) {
-      double sum = 0;
-      for (int k = 0; k < 3; ++k)
-        for (int l = 0; l < 3; ++l)
-          sum += J[k][i] * D[k * 3 + l] * J[l][j];
-      damping[i * 9 + j] = sum;
-    }
+  sandwich(J, D.data(), 1.0, damping);
 }
 
 }  // namespace railfe

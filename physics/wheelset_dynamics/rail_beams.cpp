@@ -180,16 +180,15 @@ void BeamRails::rates(double time, const double* u, const double* v, std::size_t
                        acceleration);
 }
 
-std::array<double, 3> BeamRails::rail_displacement(int k, double time, const double* u) {
+std::array<double, 3 * n_wheelset_contacts> BeamRails::rail_displacements(double time,
+                                                                          const double* u) {
   ConstraintRows rows;
   rows_at(time, rows);
-  std::array<double, 3> d{};
-  for (int i = 0; i < 3; ++i) {
-    const std::size_t r = 3 * k + i;
+  std::array<double, 3 * n_wheelset_contacts> d{};
+  for (std::size_t r = 0; r < d.size(); ++r)
     for (std::size_t e = rows.offsets[r]; e < rows.offsets[r + 1]; ++e)
       if (rows.columns[e] < offset_)
-        d[i] -= rows.values[e] * u[rows.columns[e]];
-  }
+        d[r] -= rows.values[e] * u[rows.columns[e]];
   return d;
 }
 

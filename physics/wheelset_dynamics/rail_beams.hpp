@@ -104,9 +104,9 @@ class BeamRails : public ConstraintSet {
              double* acceleration) override;
   /// Lateral and vertical irregularity at \p time.
   std::array<double, 2> offsets(double time) const;
-  /// The rail's displacement (x, y, z) under contact point \p k at \p time for the rails'
-  /// unknowns \p u: the internal node's position less the irregularities.
-  std::array<double, 3> rail_displacement(int k, double time, const double* u);
+  /// The rails' displacements (x, y, z) under the four contact points at \p time for the rails'
+  /// unknowns \p u, point after point: each internal node's position less the irregularities.
+  std::array<double, 3 * n_wheelset_contacts> rail_displacements(double time, const double* u);
 
  private:
   const RailBeams& rails_;

@@ -94,14 +94,11 @@ WheelsetBalance balance_on_rail_beams(WheelsetSystem& system, const WheelRailGeo
   double moved = 0;
   for (int round = 0; round < 30; ++round) {
     // The internal nodes where the rows put them on the rails' present shape.
-    rows.clear();
-    rails.rows_at(0, rows);
+    const auto displacement = rails.rail_displacements(0, u.data());
+    const auto offset = rails.offsets(0);
     moved = 0;
-    for (std::size_t r = 0; r < rows.size(); ++r) {
-      double node = rows.rhs[r];
-      for (std::size_t e = rows.offsets[r]; e < rows.offsets[r + 1]; ++e)
-        if (rows.columns[e] < ns)
-          node -= rows.values[e] * u[rows.columns[e]];
+    for (std::size_t r = 0; r < displacement.size(); ++r) {
+      const double node = displacement[r] + (r % 3 == 0 ? 0.0 : offset[r % 3 - 1]);
       moved = std::max(moved, std::abs(node - uv[6 + r]));
       uv[6 + r] = node;
     }

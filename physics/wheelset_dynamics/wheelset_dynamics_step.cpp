@@ -251,10 +251,9 @@ void WheelsetDynamicsStep::run(StepContext& context) {
   CsvWriter events(context.output.staging_path(context.step_name + "_contact_events.csv"),
                    {"time_s", "contact", "event", "N_N"}, root);
   auto write_rows = [&](double time, int iterations) {
+    const auto rails = track.rail_deflection(time, u.data());
     history.write_row({time, u[o], u[o + 1], u[o + 2], u[o + 3], u[o + 4], u[o + 5], v[o + 1],
-                       v[o + 5], static_cast<double>(iterations),
-                       track.rail_deflection(time, u.data())[0],
-                       track.rail_deflection(time, u.data())[1]});
+                       v[o + 5], static_cast<double>(iterations), rails[0], rails[1]});
     std::vector<double> row{time};
     for (const ContactState& c : states)
       for (double value :

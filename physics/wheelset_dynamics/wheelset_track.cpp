@@ -89,6 +89,25 @@ ParameterSpec track_rail_parameters() {
 
 namespace {
 
+// The array \p key of \p rails (N entries, the spec's length), refused unless every entry is
+// positive: a rail free to move along a direction cannot carry a load.
+template <std::size_t N>
+std::array<double, N> positive_entries(const Teuchos::ParameterList& rails, const char* key,
+                                       const std::string& source, const std::string& path,
+                                       const char* allowed) {
+  const auto given = rails.get<Teuchos::Array<double>>(key);
+  std::array<double, N> values;
+  for (std::size_t d = 0; d < N; ++d) {
+    values[d] = given[d];
+    if (!(values[d] > 0))
+      throw_input_error(source, path + "/" + key,
+                        "has a zero entry: a rail free to move along that direction cannot "
+                        "carry a load",
+                        allowed);
+  }
+  return values;
+}
+
 // The centroid of the named drawing below its top (m).
 double drawing_axis_depth(const std::string& name) {
   const RailOutline outline = rail_outline(name);
@@ -105,17 +124,11 @@ RailSpringLayout rail_spring_layout(const Teuchos::ParameterList& rails, const s
   RailSpringLayout layout;
   layout.mass = rails.get<double>("Rail mass");
   layout.roll_inertia = rails.get<double>("Rail roll inertia");
-  const auto stiffness = rails.get<Teuchos::Array<double>>("Spring stiffness");
+  layout.stiffness =
+      positive_entries<3>(rails, "Spring stiffness", source, path,
+                          "three positive stiffnesses (y, z in N/m, roll in N m/rad)");
   const auto damping = rails.get<Teuchos::Array<double>>("Spring damping");
-  for (int d = 0; d < 3; ++d) {
-    layout.stiffness[d] = stiffness[d];
-    layout.damping[d] = damping[d];
-    if (!(stiffness[d] > 0))
-      throw_input_error(source, path + "/Spring stiffness",
-                        "has a zero entry: a rail free to move along that direction cannot "
-                        "carry a load",
-                        "three positive stiffnesses (y, z in N/m, roll in N m/rad)");
-  }
+  std::copy(damping.begin(), damping.end(), layout.damping.begin());
   const std::string name = rails.get<std::string>("Section");
   layout.axis_depth = name == "custom" ? rails.get<double>("Axis depth") : drawing_axis_depth(name);
   return layout;
@@ -160,17 +173,11 @@ RailBeamLayout rail_beam_layout(const Teuchos::ParameterList& rails, const std::
   layout.length = rails.get<double>("Length");
   layout.seat_spacing = rails.get<double>("Seat spacing");
   layout.elements_per_span = rails.get<int>("Elements per span");
-  const auto stiffness = rails.get<Teuchos::Array<double>>("Seat stiffness");
+  layout.seat_stiffness =
+      positive_entries<4>(rails, "Seat stiffness", source, path,
+                          "four positive stiffnesses (x, y, z in N/m, roll in N m/rad)");
   const auto damping = rails.get<Teuchos::Array<double>>("Seat damping");
-  for (int d = 0; d < 4; ++d) {
-    layout.seat_stiffness[d] = stiffness[d];
-    layout.seat_damping[d] = damping[d];
-    if (!(stiffness[d] > 0))
-      throw_input_error(source, path + "/Seat stiffness",
-                        "has a zero entry: a rail free to move along that direction cannot "
-                        "carry a load",
-                        "four positive stiffnesses (x, y, z in N/m, roll in N m/rad)");
-  }
+  std::copy(damping.begin(), damping.end(), layout.seat_damping.begin());
   const double spans = layout.length / layout.seat_spacing;
   if (std::abs(spans - std::round(spans)) > 1e-9 * spans)
     throw_input_error(source, path + "/Length", "is not a whole number of Seat spacings",
@@ -202,14 +209,11 @@ WheelsetTrack::WheelsetTrack(const Teuchos::ParameterList& rails, const std::str
                              const std::string& path, const WheelRailGeometry& geometry,
                              WheelsetSystem& wheelset, std::function<double(double)> lateral,
                              std::function<double(double)> vertical, double start, double speed)
-    : wheelset_(wheelset),
-      lateral_(std::move(lateral)),
-      vertical_(std::move(vertical)),
-      start_(start),
-      speed_(speed) {
+    : wheelset_(wheelset) {
   const std::string model = rails.get<std::string>("Model");
   if (model == "rigid") {
-    rigid_rails_ = std::make_unique<RigidRails>(lateral_, vertical_, start, speed);
+    rigid_rails_ =
+        std::make_unique<RigidRails>(std::move(lateral), std::move(vertical), start, speed);
     whole_ = &wheelset;
     constraints_ = rigid_rails_.get();
     saddle_ = std::make_unique<MonolithicSaddlePointSolver>(wheelset);
@@ -230,7 +234,8 @@ WheelsetTrack::WheelsetTrack(const Teuchos::ParameterList& rails, const std::str
       std::make_unique<SparseLinearSystem>(beams_->mass(), beams_->damping(), beams_->stiffness());
   offset_ = structure_->n_unknowns();
   coupled_ = std::make_unique<CoupledSystem>(*structure_, wheelset);
-  beam_rails_ = std::make_unique<BeamRails>(*beams_, offset_, lateral_, vertical_, start, speed);
+  beam_rails_ = std::make_unique<BeamRails>(*beams_, offset_, std::move(lateral),
+                                            std::move(vertical), start, speed);
   whole_ = coupled_.get();
   constraints_ = beam_rails_.get();
   saddle_ = std::make_unique<BlockSaddlePointSolver>(*coupled_);
@@ -238,8 +243,7 @@ WheelsetTrack::WheelsetTrack(const Teuchos::ParameterList& rails, const std::str
 }
 
 std::array<double, 2> WheelsetTrack::offsets(double time) const {
-  const double s = start_ + speed_ * time;
-  return {lateral_ ? lateral_(s) : 0.0, vertical_ ? vertical_(s) : 0.0};
+  return beam_rails_ ? beam_rails_->offsets(time) : rigid_rails_->offsets(time);
 }
 
 WheelsetBalance WheelsetTrack::balance(const WheelRailGeometry& geometry, std::vector<double>& u,
@@ -268,8 +272,8 @@ void WheelsetTrack::accept(const std::array<ContactState, n_wheelset_contacts>& 
 std::array<double, 2> WheelsetTrack::rail_deflection(double time, const double* u) {
   if (!beam_rails_)
     return {0, 0};
-  return {beam_rails_->rail_displacement(0, time, u)[2],
-          beam_rails_->rail_displacement(2, time, u)[2]};
+  const auto displacement = beam_rails_->rail_displacements(time, u);
+  return {displacement[2], displacement[3 * 2 + 2]};  // the right and left treads' z
 }
 
 }  // namespace railfe

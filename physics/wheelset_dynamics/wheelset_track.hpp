@@ -73,8 +73,6 @@ class WheelsetTrack {
 
  private:
   WheelsetSystem& wheelset_;
-  std::function<double(double)> lateral_, vertical_;
-  double start_, speed_;
   std::size_t offset_ = 0;
   std::unique_ptr<RailBeams> beams_;
   std::unique_ptr<SparseLinearSystem> structure_;
