@@ -3,8 +3,9 @@
 /// Hertz's elliptic contact of two elastic bodies: from the relative curvatures and the elastic
 /// constants, the contact ellipse, maximum pressure, approach and the generalized stiffness
 /// K_h (N = K_h δ^{3/2}); and the inverse problems, given the approach or given the semi-axes.
-/// Complete elliptic integrals are evaluated exactly (std::comp_ellint_1/2), not by curve fits.
-/// Axes: x is the rolling direction, y lateral. Johnson, Contact Mechanics (1985), §4.2.
+/// Complete elliptic integrals are evaluated exactly (by the arithmetic–geometric mean, to
+/// round-off of std::comp_ellint_1/2), not by curve fits. Axes: x is the rolling direction, y
+/// lateral. Johnson, Contact Mechanics (1985), §4.2.
 
 namespace railfe {
 
@@ -16,6 +17,16 @@ struct ElasticBody {
 
 /// The contact modulus E* of two bodies: 1/E* = (1 − ν1²)/E1 + (1 − ν2²)/E2 (Pa).
 double contact_modulus(const ElasticBody& first, const ElasticBody& second);
+
+/// Complete elliptic integrals of the first and second kind.
+struct CompleteEllipticIntegrals {
+  double K = 0;  ///< K(e)
+  double E = 0;  ///< E(e)
+};
+
+/// K(e) and E(e) of an ellipse of axis ratio \p g = short / long in (0, 1] (eccentricity
+/// e = √(1 − g²)), by the arithmetic–geometric mean.
+CompleteEllipticIntegrals complete_elliptic_integrals(double g);
 
 /// A Hertzian contact.
 struct HertzContact {
