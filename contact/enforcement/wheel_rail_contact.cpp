@@ -177,6 +177,19 @@ CreepForces WheelRailContact::creep_forces(const HertzContact& hertz, const Cree
 
 ContactState WheelRailContact::evaluate(const ContactKinematics& state) {
   const WheelsetPose pose = relative_pose(state);
+  if (table_ && flange_) {
+    // A flange this far from its rail at the rigid contact of this lateral position cannot
+    // touch it: the elastic approach at the tread, the roll and the yaw of a running wheelset
+    // close tenths of a millimetre of it. No search, the table's point (half the flange
+    // searches of a vehicle's Newton iteration).
+    const double gap = table_->part_gap(side_, true, pose.lateral);
+    if (gap > kFarFlangeGap) {
+      ContactPoint point = table_->part_point(side_, true, pose.lateral);
+      point.gap = gap;
+      ++far_flanges_;
+      return forces_at(state, point, nullptr);
+    }
+  }
   if (!started_) {
     const GapSample sample = least_gap_sample(*geometry_, side_, flange_, pose, 200, search_);
     set_start(sample.s_wheel, sample.s_rail);

@@ -119,6 +119,11 @@ class WheelRailContact {
   std::size_t edge_contacts() const { return edge_contacts_; }
   /// Evaluations where the table's start gave the contact (a predicted jump).
   std::size_t table_jumps() const { return table_jumps_; }
+  /// Evaluations of a flange the lookup table showed farther than kFarFlangeGap from its rail
+  /// (not searched).
+  std::size_t far_flanges() const { return far_flanges_; }
+  /// A flange whose rigid-contact gap exceeds this is not searched (m).
+  static constexpr double kFarFlangeGap = 2e-3;
   /// "right tread", "left flange", ...
   std::string name() const;
   /// The side.
@@ -153,7 +158,7 @@ class WheelRailContact {
   WheelRailContactSettings settings_;
   double modulus_ = 0, shear_modulus_ = 0, poisson_ = 0;
   std::shared_ptr<const ContactTable> table_;
-  std::size_t table_jumps_ = 0, edge_contacts_ = 0;
+  std::size_t table_jumps_ = 0, edge_contacts_ = 0, far_flanges_ = 0;
   SearchSettings search_;  // the stretch searched
   bool started_ = false;
   double s_wheel_ = 0, s_rail_ = 0;

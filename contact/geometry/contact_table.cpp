@@ -140,6 +140,22 @@ std::array<double, 2> ContactTable::start(TrackSide side, bool flange, double la
   return {a[0] + w * (b[0] - a[0]), a[1] + w * (b[1] - a[1])};
 }
 
+double ContactTable::part_gap(TrackSide side, bool flange, double lateral) const {
+  const double position =
+      std::clamp((lateral - first_) / step_, 0.0, static_cast<double>(rows_.size() - 1));
+  const std::size_t i = std::min(static_cast<std::size_t>(position), rows_.size() - 2);
+  const double w = position - static_cast<double>(i);
+  const int s = static_cast<int>(side), part = flange ? 1 : 0;
+  return (1 - w) * rows_[i].parts[s][part].gap + w * rows_[i + 1].parts[s][part].gap;
+}
+
+const ContactPoint& ContactTable::part_point(TrackSide side, bool flange, double lateral) const {
+  const double position =
+      std::clamp((lateral - first_) / step_, 0.0, static_cast<double>(rows_.size() - 1));
+  return rows_[static_cast<std::size_t>(std::lround(position))]
+      .parts[static_cast<int>(side)][flange ? 1 : 0];
+}
+
 double ContactTable::rolling_radius_difference(std::size_t i) const {
   return rows_[i].active(TrackSide::right).rolling_radius -
          rows_[i].active(TrackSide::left).rolling_radius;

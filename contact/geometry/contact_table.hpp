@@ -44,6 +44,11 @@ class ContactTable {
   /// Start point (s_wheel, s_rail) for the online search of \p side's tread or flange at
   /// \p lateral (linear interpolation, clamped to the table's range).
   std::array<double, 2> start(TrackSide side, bool flange, double lateral) const;
+  /// The gap of \p side's tread or flange part at the rigid contact of \p lateral (m, linear
+  /// interpolation, clamped to the table's range): how far that part is from touching.
+  double part_gap(TrackSide side, bool flange, double lateral) const;
+  /// The searched point of \p side's tread or flange part in the row nearest \p lateral.
+  const ContactPoint& part_point(TrackSide side, bool flange, double lateral) const;
   /// Rolling radius difference right minus left of row \p i (m).
   double rolling_radius_difference(std::size_t i) const;
   /// The first shift towards \p side at which that wheel's flange part carries the contact;
