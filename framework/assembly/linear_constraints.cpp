@@ -122,6 +122,10 @@ void LinearConstraints::build_transformation() {
     auto it = by_slave.find(dof);
     if (it == by_slave.end()) {
       transformation_->insertGlobalValues(dof, Teuchos::tuple(dof), Teuchos::tuple(one));
+      // An explicit zero, so that every row of K̄ has a diagonal entry: a master DOF no element
+      // stiffens (a wheelset's spin, whose axle boxes sit on the axle) may be prescribed next,
+      // and eliminate_prescribed() writes 1 there.
+      identity_on_slaves->insertGlobalValues(dof, Teuchos::tuple(dof), Teuchos::tuple(0.0));
       continue;
     }
     std::vector<GlobalIndex> columns;
@@ -161,7 +165,8 @@ Teuchos::RCP<TpetraMatrix> LinearConstraints::eliminate_multipoint(
   transformation_->apply(f, work, Teuchos::TRANS);
   f.assign(work);
 
-  // K̄ = Tᵀ K T + (identity on slave rows, which Tᵀ K T leaves empty)
+  // K̄ = Tᵀ K T + (identity on slave rows, which Tᵀ K T leaves empty, and a zero diagonal
+  // entry on the others)
   return Tpetra::MatrixMatrix::add(1.0, false, *transform(*K), 1.0, false, *identity_on_slaves_);
 }
 

@@ -27,9 +27,20 @@ int automatic_block_size(int n_modes) {
 }
 
 KrylovPlan plan_krylov_space(int n_modes, int block_size, int krylov_blocks, long long free_dofs,
-                             long long deflated, int minimum_space) {
+                             long long deflated, int minimum_space, bool allow_dense) {
   KrylovPlan plan;
   const long long available = free_dofs - deflated;
+  if (allow_dense && deflated == 0 && free_dofs <= kDenseEigenLimit && block_size == 0 &&
+      krylov_blocks == 0) {
+    plan.dense = true;
+    if (n_modes > free_dofs) {
+      plan.parameter = "Modes";
+      plan.problem = std::to_string(n_modes) + " modes, but the model has only " +
+                     std::to_string(free_dofs) + " free DOFs";
+      plan.allowed = "at most " + std::to_string(free_dofs) + " modes for this model";
+    }
+    return plan;
+  }
   plan.block_size = block_size > 0 ? block_size : automatic_block_size(n_modes);
   // An automatic block narrows when the wide one leaves no room for a block to extend the space.
   while (block_size == 0 && plan.block_size > 1 &&

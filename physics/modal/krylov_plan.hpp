@@ -27,6 +27,9 @@ namespace railfe {
 
 /// The Krylov space of one eigensolver batch, or why it cannot be built.
 struct KrylovPlan {
+  /// The model is small enough to solve densely (kDenseEigenLimit): every free mode at once, no
+  /// Krylov space (block_size and blocks are 0).
+  bool dense = false;
   int block_size = 0;     ///< vectors per block
   int blocks = 0;         ///< blocks in the space
   std::string problem;    ///< why the request cannot be met ("" when it can)
@@ -35,6 +38,11 @@ struct KrylovPlan {
   /// Vectors in the space.
   int dimension() const { return block_size * blocks; }
 };
+
+/// Models with at most this many free DOFs are solved densely, all their modes at once: a
+/// Krylov space must stay below the free DOFs, so a vehicle of 18 free DOFs could give 16 of
+/// its 18 modes, and a dense solve of a few hundred rows takes milliseconds.
+constexpr long long kDenseEigenLimit = 400;
 
 /// The block size for a batch of \p n_modes when the deck leaves it automatic (0): wide blocks
 /// pass more right-hand sides through the factor at once and find doublets together, but a
@@ -45,9 +53,12 @@ int automatic_block_size(int n_modes);
 /// The Krylov space for \p n_modes eigenpairs in blocks of \p block_size (0 = automatic) with
 /// \p krylov_blocks blocks (0 = about three times the modes, and at least \p minimum_space
 /// vectors), in a model with \p free_dofs free DOFs of which \p deflated are spanned by modes
-/// found earlier. Sets problem and parameter when no space fits.
+/// found earlier. Sets problem and parameter when no space fits. With \p allow_dense, a first
+/// batch (no \p deflated) of a model within kDenseEigenLimit with automatic blocks is planned
+/// dense.
 KrylovPlan plan_krylov_space(int n_modes, int block_size, int krylov_blocks, long long free_dofs,
-                             long long deflated = 0, int minimum_space = 0);
+                             long long deflated = 0, int minimum_space = 0,
+                             bool allow_dense = false);
 
 /// The smallest automatic Krylov space (vectors) for a batch of a frequency band that holds
 /// \p band_modes modes, found and wanted: three times them, and at least 48 more than them (a

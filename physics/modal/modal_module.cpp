@@ -65,7 +65,10 @@ ParameterSpec modal_parameters() {
               {{"cholmod", "supernodal Cholesky (CHOLMOD, METIS) of K - sigma M on rank 0"},
                {"cg", "conjugate gradients with MueLu smoothed aggregation, to 1e-12"},
                {"klu2", "sparse LU (Amesos2 KLU2) on rank 0: slow on 3-D solids"}},
-              "How (K - sigma M) x = b is solved at every Krylov step.");
+              "How (K - sigma M) x = b is solved at every Krylov step. With cholmod, a model of at "
+              "most 400 free DOFs (Block size and Krylov blocks automatic) is solved densely "
+              "instead, all its modes at once, once the factorization has shown K - sigma M "
+              "positive definite.");
   spec.integer("Block size", 0,
                "Vectors per Krylov block; 2 or more finds both members of a doublet together. "
                "0 = automatic from each batch's modes: 2 below 32, 4 below 96, 8 from 96 "

@@ -340,7 +340,8 @@ void ModalStep::check(const CheckContext& context) {
   }
   const KrylovPlan plan =
       plan_krylov_space(first_batch(free_dofs_), parameters_->get<int>("Block size"),
-                        parameters_->get<int>("Krylov blocks"), free_dofs_);
+                        parameters_->get<int>("Krylov blocks"), free_dofs_, 0, 0,
+                        parameters_->get<std::string>("Inner solver") == "cholmod");
   if (!plan.problem.empty()) {
     throw_input_error(
         deck, path + "/" + plan.parameter,
@@ -463,6 +464,7 @@ void ModalStep::run(StepContext& context) {
   settings.maximum_restarts = p.get<int>("Maximum restarts");
   settings.tolerance = p.get<double>("Tolerance");
   settings.free_dofs = free_dofs;
+  settings.allow_dense = p.get<std::string>("Inner solver") == "cholmod";
   const auto& band = p.get<Teuchos::Array<double>>("Frequency band");
   if (!band.empty())
     settings.minimum_space = band_space(settings.n_modes);
@@ -492,7 +494,7 @@ void ModalStep::run(StepContext& context) {
     return shift + reach > shift_eigenvalue(band[1]) &&
            (shift - reach < shift_eigenvalue(band[0]) || shift <= shift_eigenvalue(band[0]));
   };
-  while (!band.empty() && result.converged && !result.eigenvalues.empty() &&
+  while (!band.empty() && result.converged && !result.complete && !result.eigenvalues.empty() &&
          !band_covered(result.eigenvalues)) {
     const long long n_found = static_cast<long long>(result.eigenvalues.size());
     std::vector<double> frequencies;
@@ -617,7 +619,8 @@ void ModalStep::run(StepContext& context) {
   summary.add(section, "fixed DOFs", static_cast<double>(constraints.n_prescribed()));
   summary.add(section, "free DOFs", static_cast<double>(free_dofs));
   summary.add(section, "mass", p.get<std::string>("Mass"));
-  summary.add(section, "eigensolver", "Anasazi block Krylov-Schur, shift-invert");
+  summary.add(section, "eigensolver",
+              result.complete ? result.inner_method : "Anasazi block Krylov-Schur, shift-invert");
   summary.add(section, "inner solver", p.get<std::string>("Inner solver"));
   summary.add(section, "shift", p.get<double>("Shift"), "Hz");
   summary.add(section, "modes requested", result.n_requested);

@@ -7,6 +7,8 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -15,6 +17,7 @@
 
 #include "framework/base/error.hpp"
 #include "framework/base/resources.hpp"
+#include "framework/solvers/gathered_matrix.hpp"
 #include "physics/modal/krylov_plan.hpp"
 
 namespace railfe {
@@ -135,9 +138,11 @@ ShiftInvertResult ShiftInvertEigensolver::solve(const ShiftInvertSettings& setti
   const long long deflated = found.is_null() ? 0 : static_cast<long long>(found->getNumVectors());
   const KrylovPlan plan =
       plan_krylov_space(settings.n_modes, settings.block_size, settings.krylov_blocks, free_dofs,
-                        deflated, settings.minimum_space);
+                        deflated, settings.minimum_space, settings.allow_dense);
   if (!plan.problem.empty())
     throw RunError(plan.parameter + ": " + plan.problem + " (allowed: " + plan.allowed + ")");
+  if (plan.dense)
+    return solve_dense(settings);
   const int block_size = plan.block_size;
   const int blocks = plan.blocks;
   result.krylov_dimension = plan.dimension();
@@ -209,6 +214,68 @@ ShiftInvertResult ShiftInvertEigensolver::solve(const ShiftInvertSettings& setti
   }
   if (n_found == 0)
     result.vectors = Teuchos::null;
+  return result;
+}
+
+ShiftInvertResult ShiftInvertEigensolver::solve_dense(const ShiftInvertSettings& settings) const {
+  ShiftInvertResult result;
+  result.n_requested = settings.n_modes;
+  result.factor_seconds = factor_seconds_;
+  result.inner_method = "dense generalized eigensolver (Eigen, rank 0)";
+  Stopwatch clock;
+  const GatheredMatrix shifted(*shifted_), mass(*M_);
+  std::vector<double> lambdas, root_vectors;
+  std::string problem;
+  if (shifted.on_root()) {
+    const long n = shifted.n_rows();
+    auto dense = [n](const GatheredMatrix& gathered) {
+      Eigen::MatrixXd out = Eigen::MatrixXd::Zero(n, n);
+      for (long i = 0; i < n; ++i)
+        for (long k = gathered.row_offsets()[i]; k < gathered.row_offsets()[i + 1]; ++k)
+          out(i, gathered.columns()[k]) += gathered.values()[k];
+      return out;
+    };
+    bool same_order = mass.n_rows() == n;
+    for (long i = 0; same_order && i < n; ++i)
+      same_order = mass.global_index(i) == shifted.global_index(i);
+    if (!same_order)
+      throw std::logic_error("ShiftInvertEigensolver: K and M gathered in different orders");
+    // M φ = μ (K − σM) φ with K − σM positive definite (σ below the spectrum): μ = 1/(λ − σ),
+    // and DOFs without mass (supports, massless nodes) give μ = 0, no mode.
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(dense(mass), dense(shifted));
+    if (solver.info() != Eigen::Success) {
+      problem =
+          "the dense eigensolver failed (K - sigma M not positive definite: the shift must "
+          "lie below the lowest natural frequency)";
+    } else {
+      const Eigen::VectorXd& mu = solver.eigenvalues();  // ascending: largest μ, lowest λ last
+      const double largest = mu.cwiseAbs().maxCoeff();
+      for (long k = n - 1; k >= 0; --k) {
+        if (!(mu(k) > 1e-12 * largest))
+          break;
+        lambdas.push_back(shift_ + 1.0 / mu(k));
+        // φᵀ(K − σM)φ = 1 from the solver; φᵀMφ = μ, so φ / √μ is mass-normalized.
+        const Eigen::VectorXd phi = solver.eigenvectors().col(k) / std::sqrt(mu(k));
+        root_vectors.insert(root_vectors.end(), phi.data(), phi.data() + n);
+      }
+    }
+  }
+  share_root_verdict(*shifted_, problem);
+  long n_found = static_cast<long>(lambdas.size());
+  shifted_->getComm()->broadcast(0, sizeof(long), reinterpret_cast<char*>(&n_found));
+  lambdas.resize(n_found);
+  if (n_found > 0)
+    shifted_->getComm()->broadcast(0, static_cast<int>(n_found * sizeof(double)),
+                                   reinterpret_cast<char*>(lambdas.data()));
+  result.eigenvalues = lambdas;
+  result.vectors = Teuchos::rcp(new TpetraMultiVector(K_->getDomainMap(), std::max(n_found, 1L)));
+  if (n_found > 0)
+    shifted.scatter(root_vectors, *result.vectors);
+  else
+    result.vectors = Teuchos::null;
+  result.converged = n_found >= settings.n_modes;
+  result.complete = true;
+  result.iteration_seconds = clock.seconds();
   return result;
 }
 

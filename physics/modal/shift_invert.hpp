@@ -26,6 +26,9 @@ struct ShiftInvertSettings {
   int maximum_restarts = 100;  ///< restarts before giving up
   double tolerance = 1e-10;    ///< Ritz residual of the inverted problem, relative to its value
   unsigned seed = 12345;       ///< seed of the random start block (reproducible runs)
+  /// Solve a small model densely (kDenseEigenLimit in krylov_plan.hpp): for the default inner
+  /// solver, whose factorization already shows K − σM positive definite.
+  bool allow_dense = false;
 };
 
 /// What the eigensolver found.
@@ -41,6 +44,9 @@ struct ShiftInvertResult {
   double iteration_seconds = 0;             ///< time in Anasazi
   std::string inner_method;                 ///< the inner solver, for the summary
   bool converged = false;                   ///< Anasazi reported all n_modes converged
+  /// Every mode of the model was computed (the dense solve of a small model): no later batch
+  /// can add one.
+  bool complete = false;
 };
 
 /// K φ = λ M φ with K − σM factorized once, for one or more eigensolves.
@@ -59,6 +65,10 @@ class ShiftInvertEigensolver {
   /// recomputing them (spectrum continuation for frequency bands).
   ShiftInvertResult solve(const ShiftInvertSettings& settings, Progress* progress = nullptr,
                           Teuchos::RCP<const TpetraMultiVector> found = Teuchos::null) const;
+
+  /// Every finite mode of a small model by a dense generalized eigensolve on rank 0 of
+  /// M φ = μ (K − σM) φ, λ = σ + 1/μ (collective); what solve() does for a dense plan.
+  ShiftInvertResult solve_dense(const ShiftInvertSettings& settings) const;
 
   /// Seconds the factorization took.
   double factor_seconds() const { return factor_seconds_; }
