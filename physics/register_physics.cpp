@@ -10,8 +10,10 @@
 #include "physics/modal/modal_module.hpp"
 #include "physics/parts/line_mesh.hpp"
 #include "physics/parts/rail_mesh.hpp"
+#include "physics/parts/vehicle_mesh.hpp"
 #include "physics/parts/wheel_mesh.hpp"
 #include "physics/statics/statics_module.hpp"
+#include "physics/wheelset_dynamics/vehicle_dynamics_module.hpp"
 #include "physics/wheelset_dynamics/wheelset_dynamics_module.hpp"
 
 namespace railfe {
@@ -30,9 +32,11 @@ void register_physics(ModuleRegistry& registry) {
   registry.add_module(wheelset_on_track_module());
   registry.add_module(contact_patch_module());
   registry.add_module(wheelset_dynamics_module());
+  registry.add_module(vehicle_dynamics_module());
   registry.add_mesh_generator(wheel_mesh_generator());
   registry.add_mesh_generator(rail_mesh_generator());
   registry.add_mesh_generator(line_mesh_generator());
+  registry.add_mesh_generator(vehicle_mesh_generator());
 }
 
 }  // namespace railfe

@@ -14,13 +14,13 @@ namespace railfe {
 
 namespace {
 
-// What one structural matrix takes from each element.
-enum class Matrix { stiffness, mass, damping };
+using Matrix = StructuralMatrix;
 
-// The element matrix (row-major, 12 × 12 for two nodes, 6 × 6 for one) of element \p nodes of a
-// block with \p section; false when the element adds nothing to this matrix.
-bool element_matrix(Matrix kind, const StructuralSection& section, const MeshPartition& partition,
-                    const LocalIndex* nodes, int n_nodes, bool lumped, double* out) {
+}  // namespace
+
+bool structural_element_matrix(StructuralMatrix kind, const StructuralSection& section,
+                               const double* const* coordinates, int n_nodes, bool lumped,
+                               double* out) {
   using RowMajor12 = Eigen::Matrix<double, 12, 12, Eigen::RowMajor>;
   using RowMajor6 = Eigen::Matrix<double, 6, 6, Eigen::RowMajor>;
   const auto put12 = [&](const Matrix12& m) { Eigen::Map<RowMajor12>{out} = m; };
@@ -29,8 +29,7 @@ bool element_matrix(Matrix kind, const StructuralSection& section, const MeshPar
     case StructuralKind::beam: {
       if (kind == Matrix::damping)
         return false;
-      const BeamElement beam =
-          make_beam(partition.coordinates(nodes[0]), partition.coordinates(nodes[1]), section.beam);
+      const BeamElement beam = make_beam(coordinates[0], coordinates[1], section.beam);
       const BeamMass mass = lumped ? BeamMass::lumped : section.beam.mass;
       put12(kind == Matrix::stiffness ? beam.stiffness() : beam.mass(mass));
       return true;
@@ -56,6 +55,14 @@ bool element_matrix(Matrix kind, const StructuralSection& section, const MeshPar
   return false;
 }
 
+namespace {
+
+// The coordinates of an element's first two nodes (the first twice for a one-node element).
+std::array<const double*, 2> node_coordinates(const MeshPartition& partition,
+                                              const LocalIndex* nodes, int n_nodes) {
+  return {partition.coordinates(nodes[0]), partition.coordinates(nodes[n_nodes > 1 ? 1 : 0])};
+}
+
 // Throws std::logic_error unless every node of the element carries six DOFs (a mixed map gives
 // solid nodes three; the modules refuse structural elements on solid nodes before assembly).
 void require_six(const DofMap& dofs, const LocalIndex* nodes, int n_nodes) {
@@ -78,7 +85,9 @@ void add_matrix(FeMatrix& A, Matrix kind, const SectionTable& sections, bool lum
     for (LocalIndex e = 0; e < block.n_elements(); ++e) {
       const LocalIndex* nodes = block.connectivity.data() + block.offsets[e];
       const int n_nodes = static_cast<int>(block.offsets[e + 1] - block.offsets[e]);
-      if (!element_matrix(kind, section, partition, nodes, n_nodes, lumped, matrix))
+      if (!structural_element_matrix(kind, section,
+                                     node_coordinates(partition, nodes, n_nodes).data(), n_nodes,
+                                     lumped, matrix))
         continue;
       require_six(A.dofs(), nodes, n_nodes);
       A.add_element(first + e, matrix);
@@ -129,7 +138,9 @@ void add_structural_gravity(const SectionTable& sections, const DofMap& dofs,
     for (LocalIndex e = 0; e < block.n_elements(); ++e) {
       const LocalIndex* nodes = block.connectivity.data() + block.offsets[e];
       const int n_nodes = static_cast<int>(block.offsets[e + 1] - block.offsets[e]);
-      if (!element_matrix(Matrix::mass, section, partition, nodes, n_nodes, false, matrix))
+      if (!structural_element_matrix(Matrix::mass, section,
+                                     node_coordinates(partition, nodes, n_nodes).data(), n_nodes,
+                                     false, matrix))
         continue;
       require_six(dofs, nodes, n_nodes);
       const int n = 6 * n_nodes;

@@ -22,6 +22,16 @@
 
 namespace railfe {
 
+/// Which matrix of a structural element.
+enum class StructuralMatrix { stiffness, mass, damping };
+
+/// The \p kind matrix (row-major, 12 × 12 for two nodes, 6 × 6 for one) of an element of
+/// \p n_nodes nodes at \p coordinates (x, y, z each) with \p section (beams: the lumped mass
+/// where \p lumped); false when the element adds nothing to this matrix (a spring's mass).
+bool structural_element_matrix(StructuralMatrix kind, const StructuralSection& section,
+                               const double* const* coordinates, int n_nodes, bool lumped,
+                               double* out);
+
 /// Adds the stiffness of every local beam2 and spring2 element, and of every spring to the
 /// ground (a spring-damper section on a one-node block), into \p K (open for assembly).
 void add_structural_stiffness(FeMatrix& K, const SectionTable& sections);

@@ -1,6 +1,7 @@
 #include "physics/wheelset_dynamics/wheelset_dynamics_module.hpp"
 
 #include "physics/common/profile_geometry.hpp"
+#include "physics/wheelset_dynamics/wheelset_contact_deck.hpp"
 #include "physics/wheelset_dynamics/wheelset_dynamics_step.hpp"
 #include "physics/wheelset_dynamics/wheelset_track.hpp"
 
@@ -38,52 +39,6 @@ ParameterSpec suspension_parameters() {
             "Yaw of the running frame: the springs hold the wheelset at this angle of attack "
             "(positive turns the axle's right end back, steering the right wheel into its rail).",
             "rad", Range::closed(-0.1, 0.1));
-  return spec;
-}
-
-ParameterSpec contact_parameters() {
-  ParameterSpec spec("The contact element.");
-  spec.real("Young's modulus", 210e9, "Of wheel and rail.", "Pa", Range::positive());
-  spec.real("Poisson's ratio", 0.3,
-            "Of wheel and rail (the creep-force table is made for 0.3; Kalker's coefficients "
-            "cover 0 to 0.5).",
-            "", Range::closed(0.0, 0.5));
-  spec.real("Friction", 0.3, "μ.", "", Range::open_closed(0, 2));
-  spec.choice("Creep theory", "table",
-              {{"table", "the exact steady-rolling solver's creep-force table (the seed's choice)"},
-               {"linear", "Kalker's linear theory, unbounded"},
-               {"shen-hedrick-elkins", "Kalker's linear theory saturated by Shen-Hedrick-Elkins"},
-               {"polach", "Polach's model (k_A = k_S = 1, friction independent of slip)"},
-               {"fastsim", "Kalker's FASTSIM"}},
-              "Tangential forces from the creepages.");
-  spec.integer("FASTSIM cells", 10, "Cells per strip and strips.", Range::at_least(2));
-  spec.only_when("Creep theory", {"fastsim"}, {"FASTSIM cells"});
-  spec.real("Curvature ratio limit", 10,
-            "Where wheel and rail are nearly conformal (the flange root), Hertz's smaller relative "
-            "curvature is raised to the larger / this ratio, keeping the ellipse within a/b of "
-            "about 1/5 to 5 (the creep-force table's range); such contacts are counted in the "
-            "summary. 0: stop the run there instead.",
-            "", Range::non_negative());
-  spec.flag("Lookup table", true,
-            "A rigid contact table over lateral shifts (±Table half range) predicts jumps between "
-            "tread and flange and starts the search there (the deeper contact wins).");
-  spec.real("Table half range", 0.02, "Lateral shifts the table covers.", "m",
-            Range::open_closed(0, 0.05));
-  spec.only_when("Lookup table", {"true"}, {"Table half range"});
-  spec.choice("Creep tangent", "consistent",
-              {{"consistent", "forward differences of the creep theory (Newton's own tangent)"},
-               {"Kalker damping",
-                "Kalker's linear damping matrix at the current ellipse, as the seed model does "
-                "(exact for the linear theory)"}},
-              "The creep forces' share of Newton's matrix (the residual is the same).");
-  spec.choice("Search", "trust-region",
-              {{"trust-region", "Newton on the wheel parameter within a trust region"},
-               {"plain Newton", "full Newton steps, clipped to the part (for comparison)"}},
-              "The contact-point search (contact/geometry/contact_search.hpp).");
-  spec.choice("Yaw", "neglected",
-              {{"neglected", "the contact search ignores yaw (the seed's choice)"},
-               {"exact", "the search works on the yawed wheel's contact locus"}},
-              "Yaw in the contact geometry (creepages always take it).");
   return spec;
 }
 

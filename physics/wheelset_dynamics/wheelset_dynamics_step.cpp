@@ -13,6 +13,7 @@
 #include "framework/time/newton_step.hpp"
 #include "physics/common/chart_script.hpp"
 #include "physics/common/profile_geometry.hpp"
+#include "physics/wheelset_dynamics/wheelset_contact_deck.hpp"
 #include "physics/wheelset_dynamics/wheelset_oscillation.hpp"
 #include "physics/wheelset_dynamics/wheelset_track.hpp"
 
@@ -22,21 +23,6 @@ namespace {
 
 const char* kContactNames[n_wheelset_contacts] = {"right_tread", "right_flange", "left_tread",
                                                   "left_flange"};
-
-WheelRailContactSettings contact_settings(const Teuchos::ParameterList& step) {
-  const auto& c = step.sublist("Contact");
-  WheelRailContactSettings settings;
-  settings.wheel = settings.rail =
-      ElasticBody{c.get<double>("Young's modulus"), c.get<double>("Poisson's ratio")};
-  settings.friction = c.get<double>("Friction");
-  settings.theory = creep_theory_from_name(c.get<std::string>("Creep theory"));
-  settings.yaw_exact = c.get<std::string>("Yaw") == "exact";
-  settings.fastsim_cells = c.get<int>("FASTSIM cells");
-  settings.curvature_ratio_limit = c.get<double>("Curvature ratio limit");
-  settings.trust_region = c.get<std::string>("Search") == "trust-region";
-  settings.kalker_damping = c.get<std::string>("Creep tangent") == "Kalker damping";
-  return settings;
-}
 
 // Vertical (Q, up on the wheel) and lateral (Y, towards the track centre on the wheel) forces
 // of one wheel, summed over its tread and flange.

@@ -11,9 +11,9 @@
 #include <memory>
 #include <vector>
 
-#include "contact/enforcement/wheel_rail_contact.hpp"
 #include "framework/time/constraint_set.hpp"
 #include "framework/time/dense_system.hpp"
+#include "physics/wheelset_dynamics/wheelset_contacts.hpp"
 
 namespace railfe {
 
@@ -40,8 +40,6 @@ struct AxleBoxSuspension {
   double frame_yaw = 0;  ///< yaw at which the springs are unstrained: an angle of attack (rad)
 };
 
-/// Index of the contact points: right tread, right flange, left tread, left flange.
-constexpr int n_wheelset_contacts = 4;
 /// Unknowns: the wheelset's 6, then 3 per contact point's internal node.
 constexpr int n_wheelset_unknowns = 6 + 3 * n_wheelset_contacts;
 
@@ -68,59 +66,55 @@ class WheelsetSystem : public DenseSecondOrderSystem {
   void solve(const double* rhs, double* x) override;
 
   /// The contact points' states at (u, v) (a search for each).
-  std::array<ContactState, n_wheelset_contacts> contact_states(const double* u, const double* v);
+  std::array<ContactState, n_wheelset_contacts> contact_states(const double* u, const double* v) {
+    return contacts_.states(u, v);
+  }
   /// Contact point \p index.
-  WheelRailContact& contact(int index) { return contacts_[index]; }
+  WheelRailContact& contact(int index) { return contacts_.contact(index); }
   /// Rolling speed V (m/s).
-  double speed() const { return speed_; }
+  double speed() const { return contacts_.speed(); }
   /// Sets the nominal spin Ω about the axle (rad/s).
-  void set_spin(double spin) {
-    spin_ = spin;
-    cached_u_.clear();
-  }
+  void set_spin(double spin) { contacts_.set_spin(spin); }
   /// Switches the creep forces off (\p rolling false: the static balance) or on.
-  void set_rolling(bool rolling) {
-    rolling_ = rolling;
-    cached_u_.clear();
-  }
+  void set_rolling(bool rolling) { contacts_.set_rolling(rolling); }
 
  private:
-  ContactKinematics kinematics(int index, const double* u, const double* v) const;
-  /// The contact states at (u, v): those of the last evaluation when (u, v) are the same and
-  /// neither spin nor rolling changed since (Newton asks for forces and tangent at one iterate),
-  /// else searched anew.
-  const std::array<ContactState, n_wheelset_contacts>& states_at(const double* u, const double* v);
   static Eigen::MatrixXd mass_matrix(const WheelsetBody& body);
 
   WheelsetBody body_;
   Eigen::MatrixXd suspension_stiffness_, suspension_damping_;
   Eigen::VectorXd rest_;  // the unknowns at which the springs are unstrained
-  std::vector<WheelRailContact> contacts_;
-  double speed_, spin_;
-  bool rolling_ = true;
-  std::vector<double> cached_u_, cached_v_;  // the iterate of cached_states_
-  std::array<ContactState, n_wheelset_contacts> cached_states_;
+  WheelsetContacts contacts_;
+};
+
+/// One wheelset on RigidRails: where it runs and where its internal nodes are.
+struct RailedWheelset {
+  double position = 0;    ///< its distance ahead of the reference point s = start + V t (m)
+  std::size_t nodes = 6;  ///< first unknown of its internal nodes (12, in contact order)
 };
 
 /// The rails as rigid lines with irregularities: each internal node's (x, y, z) equals the rail's
-/// offset (0, lateral(s), vertical(s)) under the wheelset, s = start + V t.
+/// offset (0, lateral(s), vertical(s)) under its wheelset, s = start + position + V t.
 class RigidRails : public ConstraintSet {
  public:
   /// Offsets of the running surfaces against s (either may be empty: zero); lateral to the
-  /// right, vertical down.
+  /// right, vertical down; the rows of \p wheelsets in turn (default: one wheelset at the
+  /// reference point, nodes from unknown 6 on).
   RigidRails(std::function<double(double)> lateral, std::function<double(double)> vertical,
-             double start, double speed);
+             double start, double speed,
+             std::vector<RailedWheelset> wheelsets = {RailedWheelset{}});
   /// Three rows per internal node.
   void rows_at(double time, ConstraintRows& rows) override;
   /// ġ and g̈ by central differences over ±1 mm of s.
   void rates(double time, const double* u, const double* v, std::size_t n_rows, double* velocity,
              double* acceleration) override;
-  /// Lateral and vertical offsets at \p time.
-  std::array<double, 2> offsets(double time) const;
+  /// Lateral and vertical offsets at \p time, \p position ahead of the reference point.
+  std::array<double, 2> offsets(double time, double position = 0) const;
 
  private:
   std::function<double(double)> lateral_, vertical_;
   double start_, speed_;
+  std::vector<RailedWheelset> wheelsets_;
 };
 
 }  // namespace railfe

@@ -1,0 +1,74 @@
+#include "physics/wheelset_dynamics/vehicle_dynamics_module.hpp"
+
+#include "physics/common/profile_geometry.hpp"
+#include "physics/wheelset_dynamics/vehicle_dynamics_step.hpp"
+#include "physics/wheelset_dynamics/wheelset_contact_deck.hpp"
+
+namespace railfe {
+
+namespace {
+
+ParameterSpec vehicle_dynamics_parameters() {
+  ParameterSpec spec(
+      "A vehicle from the mesh (Mesh/Type vehicle, or any mesh of beams, point masses, "
+      "spring-dampers and rigid links in track axes: x forward, y right, z down) on rigid rails: "
+      "the implicit wheel-rail contact element at tread and flange of each wheel of every "
+      "wheelset node, contact forces as Lagrange multipliers, HHT-alpha from the static "
+      "balance.");
+  spec.sublist("Profiles", profile_parameters(), "Profile files.");
+  spec.sublist("Track", track_parameters(), "Track and wheelset dimensions.");
+  spec.sublist("Contact", contact_parameters(), "The contact element.");
+  spec.text("Wheelsets", "wheelsets",
+            "Node set of the wheelset centres (each a node of its own, not carried by a rigid "
+            "link; its six motions are the wheelset's), in any order: their x coordinates place "
+            "them along the track.");
+  spec.text_array("Measuring points", {},
+                  "Node sets whose nodes' displacements and accelerations (lateral, vertical) go "
+                  "to <step>_points.csv, e.g. {floor_above_rear_bogie}.");
+  spec.required_real("Speed", "Forward speed (creepages divide by it).", "m/s", Range::positive());
+  spec.real("Start", 0,
+            "Track position s of the mesh's x = 0 at t = 0 (a wheelset at x runs over the "
+            "irregularities at s = Start + x + Speed t).",
+            "m");
+  spec.required_real("End time", "Simulated duration.", "s", Range::positive());
+  spec.required_real("Time step", "Δt.", "s", Range::positive());
+  spec.real("Alpha", 0,
+            "HHT alpha in [-1/3, 0] (beta = (1-alpha)^2/4, gamma = (1-2 alpha)/2); 0 is the "
+            "average-acceleration rule (no numerical damping), as in the published vehicle runs.",
+            "", Range::closed(-1.0 / 3.0, 0));
+  spec.integer("Newton iterations", 25, "Corrections allowed per step.", Range::at_least(1));
+  spec.real("Newton tolerance", 1e-6,
+            "Converged when the residual is below this fraction of the step's force scale and the "
+            "last correction below this fraction of the step's displacement.",
+            "", Range::closed(1e-12, 1e-3));
+  spec.flag("Line search", true,
+            "Halve a Newton correction that raises the residual; false: plain Newton.");
+  spec.real("Gravity", 9.81, "g, along +z (down).", "m/s^2", Range::non_negative());
+  spec.text("Lateral irregularity", "",
+            "Lateral offset of both rails (right positive) as a function of the track position s "
+            "(write it with the variable x) ('' = none).");
+  spec.text("Vertical irregularity", "",
+            "Vertical offset of both rails (down positive) as a function of s (variable x) ('' = "
+            "none).");
+  spec.real("History interval", 0, "Time between rows of the histories (0: every step).", "s",
+            Range::non_negative());
+  return spec;
+}
+
+}  // namespace
+
+ModuleDescriptor vehicle_dynamics_module() {
+  ModuleDescriptor module;
+  module.name = "vehicle dynamics";
+  module.summary =
+      "A vehicle of the mesh on rigid rails with the implicit wheel-rail contact element at "
+      "every wheelset, HHT-alpha from the static balance.";
+  module.parameters = vehicle_dynamics_parameters;
+  module.create = [](const Teuchos::ParameterList& parameters) {
+    return std::make_unique<VehicleDynamicsStep>(parameters);
+  };
+  module.needs_mesh = true;
+  return module;
+}
+
+}  // namespace railfe

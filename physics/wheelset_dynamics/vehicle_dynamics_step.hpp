@@ -1,0 +1,35 @@
+#pragma once
+/// \file
+/// One "vehicle dynamics" step (see vehicle_dynamics_module.hpp).
+
+#include <memory>
+#include <vector>
+
+#include "contact/geometry/wheel_rail_geometry.hpp"
+#include "framework/app/module.hpp"
+#include "physics/common/dense_structural_model.hpp"
+
+namespace railfe {
+
+/// A vehicle running on rigid rails.
+class VehicleDynamicsStep : public AnalysisStep {
+ public:
+  /// Keeps the step's validated parameters.
+  explicit VehicleDynamicsStep(const Teuchos::ParameterList& parameters);
+  /// Reads the profiles, builds the vehicle's matrices and checks the wheelset nodes, the
+  /// measuring points and the irregularities.
+  void check(const CheckContext& context) override;
+  /// Static balance, then the time integration; writes the histories and contact events (every
+  /// rank computes, rank 0 writes).
+  void run(StepContext& context) override;
+
+ private:
+  const Teuchos::ParameterList* parameters_;
+  std::shared_ptr<WheelRailGeometry> geometry_;
+  std::unique_ptr<DenseStructuralModel> model_;
+  std::vector<GlobalIndex> wheelsets_;  // front to rear
+  std::vector<GlobalIndex> points_;     // measuring points
+  std::vector<std::string> point_names_;
+};
+
+}  // namespace railfe
