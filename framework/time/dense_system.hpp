@@ -26,8 +26,11 @@ class DenseSecondOrderSystem : public SecondOrderSystem {
   /// y = K_R x with the matrix given to set_rayleigh_stiffness().
   void apply_rayleigh_stiffness(const double* x, double* y) override;
   /// Forms A from M, tangent() at (u, v) and K_R without factoring it (matrix() then holds it):
-  /// for block solvers that border A with constraint rows, where A alone may be singular.
-  void form_matrix(const double* u, const double* v, const MatrixCoefficients& coefficients);
+  /// for block solvers that border A with constraint rows, where A alone may be singular. A
+  /// system whose tangent is mostly constant may form A faster itself (write it to
+  /// matrix_to_form()).
+  virtual void form_matrix(const double* u, const double* v,
+                           const MatrixCoefficients& coefficients);
   /// Forms A (form_matrix()) and LU-factors it; throws RunError when A is singular to working
   /// precision.
   void factor(const double* u, const double* v, const MatrixCoefficients& coefficients) override;
@@ -45,6 +48,10 @@ class DenseSecondOrderSystem : public SecondOrderSystem {
   void set_rayleigh_stiffness(Eigen::MatrixXd stiffness) { rayleigh_ = std::move(stiffness); }
   /// The mass matrix.
   const Eigen::MatrixXd& mass() const { return mass_; }
+
+ protected:
+  /// The A that form_matrix() writes (sized n × n by the caller).
+  Eigen::MatrixXd& matrix_to_form() { return matrix_; }
 
  private:
   Eigen::MatrixXd mass_, rayleigh_, tangent_stiffness_, tangent_damping_, matrix_;

@@ -60,6 +60,17 @@ void VehicleSystem::tangent(const double* u, const double* v, Eigen::MatrixXd& s
     wheelset.add_tangent(u, v, stiffness, damping);
 }
 
+void VehicleSystem::form_matrix(const double* u, const double* v, const MatrixCoefficients& c) {
+  if (!same_coefficients(c, structural_coefficients_)) {
+    structural_ = c.mass * mass() + c.damping * damping_ + c.stiffness * stiffness_;
+    structural_coefficients_ = c;
+  }
+  Eigen::MatrixXd& a = matrix_to_form();
+  a = structural_;
+  for (auto& wheelset : wheelsets_)
+    wheelset.add_tangent_matrix(u, v, c.stiffness, c.damping, a);
+}
+
 void VehicleSystem::factor(const double* u, const double* v,
                            const MatrixCoefficients& coefficients) {
   form_matrix(u, v, coefficients);

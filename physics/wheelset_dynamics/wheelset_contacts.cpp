@@ -76,8 +76,8 @@ void WheelsetContacts::add_forces(const double* u, const double* v, double* forc
   }
 }
 
-void WheelsetContacts::add_tangent(const double* u, const double* v, Eigen::MatrixXd& stiffness,
-                                   Eigen::MatrixXd& damping) {
+template <class Add>
+void WheelsetContacts::for_each_tangent_entry(const double* u, const double* v, Add&& add) {
   const auto& all = states(u, v);
   for (int k = 0; k < n_wheelset_contacts; ++k) {
     if (!all[k].active)
@@ -85,16 +85,30 @@ void WheelsetContacts::add_tangent(const double* u, const double* v, Eigen::Matr
     double kt[81], ct[81];
     contacts_[k].tangent(kinematics(k, u, v), all[k], kt, ct);
     // The element's unknowns 0..5 are the wheelset's, 6..8 the node's.
-    const auto global = [this, k](int i) {
-      return static_cast<Eigen::Index>(i < 6 ? unknowns_.wheelset + i
-                                             : unknowns_.nodes + 3 * k + (i - 6));
-    };
+    Eigen::Index global[9];
     for (int i = 0; i < 9; ++i)
-      for (int j = 0; j < 9; ++j) {
-        stiffness(global(i), global(j)) += kt[i * 9 + j];
-        damping(global(i), global(j)) += ct[i * 9 + j];
-      }
+      global[i] = static_cast<Eigen::Index>(i < 6 ? unknowns_.wheelset + i
+                                                 : unknowns_.nodes + 3 * k + (i - 6));
+    for (int i = 0; i < 9; ++i)
+      for (int j = 0; j < 9; ++j)
+        add(global[i], global[j], kt[i * 9 + j], ct[i * 9 + j]);
   }
+}
+
+void WheelsetContacts::add_tangent(const double* u, const double* v, Eigen::MatrixXd& stiffness,
+                                   Eigen::MatrixXd& damping) {
+  for_each_tangent_entry(u, v, [&](Eigen::Index i, Eigen::Index j, double k, double c) {
+    stiffness(i, j) += k;
+    damping(i, j) += c;
+  });
+}
+
+void WheelsetContacts::add_tangent_matrix(const double* u, const double* v,
+                                          double stiffness_scale, double damping_scale,
+                                          Eigen::MatrixXd& matrix) {
+  for_each_tangent_entry(u, v, [&](Eigen::Index i, Eigen::Index j, double k, double c) {
+    matrix(i, j) += stiffness_scale * k + damping_scale * c;
+  });
 }
 
 }  // namespace railfe

@@ -44,6 +44,10 @@ class WheelsetContacts {
   /// Adds each active contact's tangent (∂f/∂u, ∂f/∂v) at (u, v) into the system's matrices.
   void add_tangent(const double* u, const double* v, Eigen::MatrixXd& stiffness,
                    Eigen::MatrixXd& damping);
+  /// Adds \p stiffness_scale ∂f/∂u + \p damping_scale ∂f/∂v of each active contact at (u, v)
+  /// into \p matrix (a time step's A).
+  void add_tangent_matrix(const double* u, const double* v, double stiffness_scale,
+                          double damping_scale, Eigen::MatrixXd& matrix);
   /// Contact point \p index.
   WheelRailContact& contact(int index) { return contacts_[index]; }
   /// Where the wheelset's unknowns are.
@@ -57,6 +61,10 @@ class WheelsetContacts {
 
  private:
   ContactKinematics kinematics(int index, const double* u, const double* v) const;
+  /// Calls \p add(row, column, ∂f/∂u entry, ∂f/∂v entry) for every entry of every active
+  /// contact's tangent at (u, v), rows and columns the system's.
+  template <class Add>
+  void for_each_tangent_entry(const double* u, const double* v, Add&& add);
   bool same_iterate(const double* u, const double* v) const;
 
   WheelsetUnknowns unknowns_;
