@@ -112,6 +112,19 @@ WheelRailGeometry jis_geometry() {
                            drawing_curve("Shinkansen860", ProfileType::wheel), track, wheelset);
 }
 
+TEST(WheelDrawing, TreadAndFlangeSplitInTheMiddleOfTheRoot) {
+  // The root is an R15 arc from 18.9 to 32.4 mm: concave alike all along, so the split between
+  // tread and flange lies inside it, away from its ends (where the spline through the points
+  // rings and the most concave sample would fall), and root contacts count as flange contacts.
+  const WheelRailGeometry geometry = jis_geometry();
+  for (TrackSide side : {TrackSide::left, TrackSide::right}) {
+    const double eta = geometry.wheel(side).at(geometry.flange_split(side)).p.y;
+    const double y = 0.560 - std::abs(eta);  // from the tape circle towards the flange
+    EXPECT_GT(y, 0.0219);
+    EXPECT_LT(y, 0.0294);
+  }
+}
+
 // Δr of a rigid wheelset of cones (slope λ, radius r0 at a from the axle's middle) on two
 // circular crowns (radius R, centres c either side): both cone lines lie R from the crown
 // centres, which fixes the roll φ and the centres' depth H below the axle for each shift y:
