@@ -36,10 +36,7 @@ std::vector<std::array<double, 2>> profile_drawing_points(const std::string& nam
 }
 
 std::shared_ptr<const ProfileCurve> drawing_curve(const std::string& name, ProfileType role) {
-  std::vector<Vec2> points;
-  for (const auto& p : profile_drawing_points(name, role))
-    points.push_back({p[0], p[1]});
-  return spline_curve(points);
+  return spline_curve(profile_drawing_points(name, role));
 }
 
 }  // namespace railfe

@@ -35,10 +35,7 @@ std::shared_ptr<const ProfileCurve> read_curve(const std::string& file, ProfileT
                       role == ProfileType::rail ? "a rail profile" : "a wheel profile");
   for (const std::string& warning : profile.warnings)
     warnings.push_back(warning + " (" + deck + ": " + parameter + ")");
-  std::vector<Vec2> points;
-  for (const auto& p : profile.points)
-    points.push_back({p[0], p[1]});
-  return spline_curve(points);
+  return spline_curve(profile.points);
 }
 
 const char* role_name(ProfileType role) {
@@ -73,10 +70,7 @@ std::shared_ptr<const ProfileCurve> drawn_curve(const std::string& name, Profile
   }
   auto points = profile_drawing_points(name, role);
   check_profile(points, {}, kDrawingPrefix + name, checks);
-  std::vector<Vec2> curve;
-  for (const auto& p : points)
-    curve.push_back({p[0], p[1]});
-  return spline_curve(curve);
+  return spline_curve(points);
 }
 
 }  // namespace
