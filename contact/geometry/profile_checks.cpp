@@ -17,9 +17,14 @@ double cross(Point o, Point a, Point b) {
 }
 
 // Whether segments ab and cd share a point (collinear ones when their extents overlap). Cross
-// products within round-off of zero count as zero, so straight runs of points are collinear.
+// products within round-off of zero count as zero, so straight runs of points are collinear:
+// the round-off grows with the distance between the segments, not with their lengths, so it is
+// measured against the square of the four points' extent.
 bool segments_cross(Point a, Point b, Point c, Point d) {
-  const double scale = std::hypot(b[0] - a[0], b[1] - a[1]) * std::hypot(d[0] - c[0], d[1] - c[1]);
+  double extent = 0;
+  for (const Point& p : {b, c, d})
+    extent = std::max(extent, std::hypot(p[0] - a[0], p[1] - a[1]));
+  const double scale = extent * extent;
   auto sign = [&](double v) { return v > 1e-12 * scale ? 1 : (v < -1e-12 * scale ? -1 : 0); };
   const int s1 = sign(cross(c, d, a)), s2 = sign(cross(c, d, b));
   const int s3 = sign(cross(a, b, c)), s4 = sign(cross(a, b, d));

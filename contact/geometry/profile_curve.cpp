@@ -187,6 +187,13 @@ double signed_curvature(Vec2 d1, Vec2 d2) {
   return (d1.y * d2.z - d1.z * d2.y) / (speed * speed * speed);
 }
 
+std::unique_ptr<ProfileCurve> spline_curve(const std::vector<std::array<double, 2>>& points) {
+  std::vector<Vec2> converted;
+  for (const auto& p : points)
+    converted.push_back({p[0], p[1]});
+  return spline_curve(converted);
+}
+
 std::unique_ptr<ProfileCurve> spline_curve(const std::vector<Vec2>& points) {
   return std::make_unique<SplineCurve>(points);
 }

@@ -49,6 +49,8 @@ double signed_curvature(Vec2 d1, Vec2 d2);
 /// Natural C2 cubic spline through \p points (at least 3, consecutive points distinct),
 /// parameterized by cumulative chord length.
 std::unique_ptr<ProfileCurve> spline_curve(const std::vector<Vec2>& points);
+/// The same through (y, z) pairs, as profile files and drawings list them.
+std::unique_ptr<ProfileCurve> spline_curve(const std::vector<std::array<double, 2>>& points);
 
 /// Circular arc of \p radius about \p centre from polar angle \p angle_begin to \p angle_end
 /// (radians, measured from +y towards +z); parameter = arc length from the first end.

@@ -230,10 +230,7 @@ std::string shipped_profile(const std::string& file_name) {
 }
 
 std::shared_ptr<const ProfileCurve> shipped_curve(const std::string& file_name) {
-  std::vector<Vec2> points;
-  for (const auto& p : read_profile_file(shipped_profile(file_name)).points)
-    points.push_back({p[0], p[1]});
-  return spline_curve(points);
+  return spline_curve(read_profile_file(shipped_profile(file_name)).points);
 }
 
 }  // namespace railfe

@@ -1,8 +1,9 @@
 #pragma once
 /// \file
-/// Rail cross-sections built from their standard drawings (EN 13674-1): the outline as the
-/// drawing gives it, circular arcs and straight lines joined tangentially or by fillets, so a
-/// generated rail has the drawing's exact crown radii rather than a digitized approximation.
+/// Rail cross-sections built from their standard drawings (EN 13674-1, JIS E 1101): the outline
+/// as the drawing gives it, circular arcs and straight lines joined tangentially or by fillets
+/// (drawing_chain.hpp), so a generated rail has the drawing's exact crown radii rather than a
+/// digitized approximation.
 /// Coordinates (u, v) in metres: u lateral (the section is symmetric about u = 0), v vertical
 /// with v = 0 at the top of the crown and the foot at v = -height.
 ///
@@ -11,25 +12,12 @@
 /// where they touch (the drawing makes them tangent) or by a fillet; the right half is its
 /// mirror image.
 
-#include <array>
 #include <string>
 #include <vector>
 
+#include "contact/geometry/drawing_chain.hpp"
+
 namespace railfe {
-
-/// A point or vector of the section plane (u, v), metres.
-using SectionPoint = std::array<double, 2>;
-
-/// One piece of an outline: a straight segment or a circular arc, traversed from start to end.
-struct OutlineSegment {
-  SectionPoint start;   ///< where the piece begins
-  SectionPoint end;     ///< where it ends
-  bool is_arc = false;  ///< false: the straight segment start-end
-  SectionPoint centre;  ///< centre of the arc (arcs only)
-  double radius = 0;    ///< radius of the arc (arcs only)
-  /// +1 when the arc turns left (counter-clockwise), -1 when it turns right (arcs only).
-  int turn = 0;
-};
 
 /// A closed outline, counter-clockwise (the material on the left of the direction of travel).
 struct RailOutline {
@@ -40,12 +28,16 @@ struct RailOutline {
   std::vector<std::size_t> running_surface;
 };
 
-/// The names of the drawings railfe knows ("54E1", "60E1").
+/// The names of the drawings railfe knows ("54E1", "60E1", "JIS60").
 std::vector<std::string> rail_drawing_names();
 
 /// The outline of the named drawing. Throws std::invalid_argument for an unknown name (callers
 /// check names against rail_drawing_names() and report input errors themselves).
 RailOutline rail_outline(const std::string& name);
+
+/// The running surface and the head's sides of \p outline, from the side at u > 0 over the crown
+/// to the side at u < 0: the part of the rail a wheel can touch.
+std::vector<OutlineSegment> rail_head(const RailOutline& outline);
 
 /// Points along the outline no farther apart than \p spacing (every segment's ends included,
 /// arcs subdivided evenly), in order, without repeating the first point at the end.

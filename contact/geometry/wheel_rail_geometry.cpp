@@ -1,5 +1,6 @@
 #include "contact/geometry/wheel_rail_geometry.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -39,6 +40,24 @@ double extreme_parameter(const ProfileCurve& curve, int coordinate, bool smalles
       lo = s1;
   }
   return (lo + hi) / 2;
+}
+
+// The sample to split a wheel at, given the curvatures \p k and the most concave sample \p peak:
+// the peak, unless the root there is a circular arc (a drawn profile's), concave alike all along,
+// whose middle is taken instead: its ends, where the spline through its points rings, would put
+// most of the root in one part.
+std::size_t root_middle(const std::array<double, 401>& k, std::size_t peak) {
+  std::size_t first = peak, last = peak;
+  while (first > 0 && k[first - 1] >= 0.8 * k[peak])
+    --first;
+  while (last + 1 < k.size() && k[last + 1] >= 0.8 * k[peak])
+    ++last;
+  const std::size_t middle = (first + last) / 2;
+  const auto alike = std::count_if(k.begin() + first, k.begin() + last + 1, [&](double value) {
+    return std::abs(value - k[middle]) <= 0.02 * k[middle];
+  });
+  const bool arc = last - first >= 4 && alike >= 0.8 * (last - first + 1);
+  return arc ? middle : peak;
 }
 
 }  // namespace
@@ -112,15 +131,12 @@ WheelRailGeometry::WheelRailGeometry(std::shared_ptr<const ProfileCurve> rail,
     // the running point (concave: the profile turns towards its outward normal).
     const double s_tip = extreme_parameter(w, 1, false);
     const double lo = std::min(s_tip, running_[side]), hi = std::max(s_tip, running_[side]);
-    double best = (lo + hi) / 2, best_curvature = -1e300;
-    for (int i = 0; i <= 400; ++i) {
-      const double s = lo + (hi - lo) * i / 400;
-      const double k = signed_curvature(w, s);
-      if (k > best_curvature) {
-        best_curvature = k;
-        best = s;
-      }
-    }
+    std::array<double, 401> k;
+    for (std::size_t i = 0; i < k.size(); ++i)
+      k[i] = signed_curvature(w, lo + (hi - lo) * i / 400);
+    const std::size_t peak = std::max_element(k.begin(), k.end()) - k.begin();
+    const double best_curvature = k[peak];
+    const double best = lo + (hi - lo) * root_middle(k, peak) / 400;
     // A profile without a concave flange root (a cone, a cylinder) is all tread.
     const bool flange_first = side == 1;
     split_[side] = best_curvature > 1e-9 ? best : (flange_first ? w.begin() : w.end());

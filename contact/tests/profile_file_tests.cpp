@@ -235,5 +235,16 @@ TEST_F(ProfileFiles, WarnsAboutSimpackProcessingFlagsItDoesNotApply) {
   EXPECT_TRUE(read_profile_file(rail("plain.prr", crown)).warnings.empty());
 }
 
+TEST(ProfileChecks, LongStraightRunsAreNoLoop) {
+  // A drawn 1:20 head side sampled every 0.2 mm (as drawings are, profile_drawing.hpp): exactly
+  // collinear points, whose cross products far apart are round-off of the coordinates rather
+  // than of the short segments; they must not be taken for a crossing.
+  std::vector<std::array<double, 2>> points;
+  const std::array<double, 2> a{-0.0337383, 0.0380724}, b{-0.0325, 0.0133073};
+  for (int k = 0; k <= 125; ++k)
+    points.push_back({a[0] + k / 125.0 * (b[0] - a[0]), a[1] + k / 125.0 * (b[1] - a[1])});
+  EXPECT_NO_THROW(check_profile(points, {}, "side", {}));
+}
+
 }  // namespace
 }  // namespace railfe

@@ -1,9 +1,11 @@
 #include "physics/common/profile_geometry.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <stdexcept>
 
+#include "contact/geometry/profile_drawing.hpp"
 #include "contact/geometry/profile_file.hpp"
 #include "framework/base/error.hpp"
 #include "framework/output/csv_writer.hpp"
@@ -33,9 +35,41 @@ std::shared_ptr<const ProfileCurve> read_curve(const std::string& file, ProfileT
                       role == ProfileType::rail ? "a rail profile" : "a wheel profile");
   for (const std::string& warning : profile.warnings)
     warnings.push_back(warning + " (" + deck + ": " + parameter + ")");
-  std::vector<Vec2> points;
-  for (const auto& p : profile.points)
-    points.push_back({p[0], p[1]});
+  return spline_curve(profile.points);
+}
+
+const char* role_name(ProfileType role) {
+  return role == ProfileType::rail ? "rail" : "wheel";
+}
+
+// "drawing:A, drawing:B, ..." for the drawings of \p role.
+std::string drawing_list(ProfileType role) {
+  std::string list;
+  for (const std::string& name : profile_drawing_names(role))
+    list += (list.empty() ? "" : ", ") + std::string(kDrawingPrefix) + name;
+  return list;
+}
+
+// The drawing \p name that the deck's \p parameter names ("drawing:<name>"), through the same
+// checks as a file's points; an unknown name is refused with the drawings the parameter takes.
+std::shared_ptr<const ProfileCurve> drawn_curve(const std::string& name, ProfileType role,
+                                                const ProfileReadSettings& checks,
+                                                const std::string& deck,
+                                                const std::string& parameter) {
+  const auto names = profile_drawing_names(role);
+  if (std::find(names.begin(), names.end(), name) == names.end()) {
+    const ProfileType other = role == ProfileType::rail ? ProfileType::wheel : ProfileType::rail;
+    const auto others = profile_drawing_names(other);
+    const std::string near = closest_name(name, names);
+    throw_input_error(deck, parameter,
+                      std::find(others.begin(), others.end(), name) != others.end()
+                          ? kDrawingPrefix + name + " is a " + role_name(other) + " drawing"
+                          : "unknown " + std::string(role_name(role)) + " drawing '" + name + "'" +
+                                (near.empty() ? "" : " (did you mean " + near + "?)"),
+                      drawing_list(role) + ", or a profile file");
+  }
+  auto points = profile_drawing_points(name, role);
+  check_profile(points, {}, kDrawingPrefix + name, checks);
   return spline_curve(points);
 }
 
@@ -46,22 +80,27 @@ ParameterSpec profile_parameters() {
   spec.text("Rail", "",
             "Rail profile, right rail, y to the field side, z down (SIMPACK .prr, MiniProf .ban "
             "or two-column text in mm), relative to the deck; empty = the Manchester "
-            "benchmark's 60E1 (canted 1:40).");
+            "benchmark's 60E1 (canted 1:40); or a standard drawing's head, upright: " +
+                drawing_list(ProfileType::rail) + ".");
   spec.text("Wheel", "",
             "Wheel profile, y from the running point towards the flange, z radially outwards "
             "(SIMPACK .prw, MiniProf .whl or two-column text in mm); empty = the benchmark's "
-            "S1002.");
+            "S1002; or a standard drawing: " +
+                drawing_list(ProfileType::wheel) + ".");
   spec.flag("Wheel mirrored", false,
             "The wheel file's y runs towards the field side (as many measured profiles, from the "
-            "flange back, list it).");
+            "flange back, list it). Files only: drawings are in railfe's axes.");
   spec.real("Wheel running point", 0,
             "The wheel file's y of the running point (the nominal rolling radius), before "
-            "mirroring.",
+            "mirroring. Files only: a drawing's running point is its tape circle.",
             "m");
-  spec.flag("Rail mirrored", false, "The rail file's y runs towards the gauge side.");
+  spec.flag("Rail mirrored", false,
+            "The rail file's y runs towards the gauge side. Files only: drawings are in "
+            "railfe's axes.");
   spec.flag("Rail canted", true,
             "The rail profile is already drawn at the track's inclination (as the benchmark's "
-            "is); false rotates it by Track/Inclination.");
+            "is); false rotates it by Track/Inclination. Files only: a drawing is upright and "
+            "always rotated.");
   spec.integer("Smoothing passes", 0,
                "[1 2 1]/4 filter passes on z before the zig-zag and kink checks (measured "
                "profiles).",
@@ -100,21 +139,30 @@ std::shared_ptr<WheelRailGeometry> read_profile_geometry(const Teuchos::Paramete
   checks.smoothing_passes = profiles.get<int>("Smoothing passes");
   checks.kink_angle_degrees = profiles.get<double>("Kink angle");
   checks.zigzag_angle_degrees = profiles.get<double>("Zig-zag angle");
-  auto file = [&](const std::string& key, const std::string& shipped) {
-    const auto given = profiles.get<std::string>(key);
-    return given.empty() ? shipped_profile(shipped) : deck.resolve(given);
-  };
   ProfileReadSettings rail_axes = checks, wheel_axes = checks;
   rail_axes.mirror_y = profiles.get<bool>("Rail mirrored");
   wheel_axes.mirror_y = profiles.get<bool>("Wheel mirrored");
   wheel_axes.y_origin = profiles.get<double>("Wheel running point");
-  const std::string rail_file = file("Rail", "MBench_UIC60_v3.prr");
-  const std::string wheel_file = file("Wheel", "MBench_S1002_v3.prw");
   std::vector<std::string> warnings;
-  const auto rail = read_curve(rail_file, ProfileType::rail, rail_axes, context.source(),
-                               context.path + "/Profiles/Rail", warnings);
-  const auto wheel = read_curve(wheel_file, ProfileType::wheel, wheel_axes, context.source(),
-                                context.path + "/Profiles/Wheel", warnings);
+  // The profile of \p key: a drawing, or a file (\p shipped when the deck gives none); \p named
+  // gets what it was, for messages.
+  auto curve = [&](const std::string& key, const std::string& shipped, ProfileType role,
+                   const ProfileReadSettings& axes, std::string& named) {
+    const auto given = profiles.get<std::string>(key);
+    const std::string parameter = context.path + "/Profiles/" + key;
+    if (given.rfind(kDrawingPrefix, 0) == 0) {
+      named = given;
+      return drawn_curve(given.substr(std::string(kDrawingPrefix).size()), role, checks,
+                         context.source(), parameter);
+    }
+    named = given.empty() ? shipped_profile(shipped) : deck.resolve(given);
+    return read_curve(named, role, axes, context.source(), parameter, warnings);
+  };
+  std::string rail_file, wheel_file;
+  const auto rail = curve("Rail", "MBench_UIC60_v3.prr", ProfileType::rail, rail_axes, rail_file);
+  const auto wheel =
+      curve("Wheel", "MBench_S1002_v3.prw", ProfileType::wheel, wheel_axes, wheel_file);
+  const bool drawn_rail = rail_file.rfind(kDrawingPrefix, 0) == 0;
   if (context.model.comm().is_root())
     for (const std::string& warning : warnings)
       std::cerr << "warning: " << warning << "\n";
@@ -128,7 +176,7 @@ std::shared_ptr<WheelRailGeometry> read_profile_geometry(const Teuchos::Paramete
             CsvWriter::format(t.get<double>("Gauge")) + " m: they differ by more than two flanges",
         "within 0.2 m of Gauge (1.360 m for 1.435 m gauge)");
   TrackLayout track{t.get<double>("Gauge"), t.get<double>("Gauge point depth"),
-                    t.get<double>("Inclination"), profiles.get<bool>("Rail canted")};
+                    t.get<double>("Inclination"), !drawn_rail && profiles.get<bool>("Rail canted")};
   WheelsetLayout wheelset{t.get<double>("Back to back"), t.get<double>("Flange back"),
                           t.get<double>("Nominal radius")};
   try {

@@ -23,6 +23,8 @@ def rows(path):
 
 def main():
     profiles, contacts, table = (rows(path) for path in sys.argv[1:4])
+    # Rows that did not close hold no contact (the summary counts them): leave them out.
+    table = [r for r in table if r["converged"] == "1"]
     png = sys.argv[4]
     poses = list(dict.fromkeys(p["pose"] for p in profiles if p["body"] == "wheel"))
     colours = {pose: plt.cm.viridis(i / max(len(poses) - 1, 1)) for i, pose in enumerate(poses)}
