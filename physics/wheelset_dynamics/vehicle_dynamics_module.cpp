@@ -8,6 +8,33 @@ namespace railfe {
 
 namespace {
 
+ParameterSpec structure_deviation_parameters() {
+  ParameterSpec spec(
+      "A lateral displacement of the structure under the track (two spans), which the rails "
+      "follow on their pads: added to the Lateral irregularity.");
+  spec.choice("Shape", "none",
+              {{"none", "no deviation"},
+               {"bending", "two consecutive spans bent: the pier between them moved by Amplitude"},
+               {"translation", "one span rotated from 0 to Amplitude, the next translated by it"}},
+              "The structure's displacement.");
+  spec.real("Start", 0, "Track position s where the first span begins.", "m");
+  spec.real("Span", 20, "Span length.", "m", Range::positive());
+  spec.real("Amplitude", 0.008, "Largest lateral displacement of the structure (right).", "m",
+            Range::closed(-0.2, 0.2));
+  spec.real("Pad stiffness", 4.6e7,
+            "Lateral stiffness of the rail fastenings per metre of rail (the published 4.6e4 "
+            "kN/m per m).",
+            "N/m^2", Range::positive());
+  spec.real("Rail lateral inertia", 509e-8,
+            "The rail's second moment of area about its vertical axis (JIS 60 kg: 509 cm^4).",
+            "m^4", Range::positive());
+  spec.real("Rail Young's modulus", 2.1e11, "Of the rail.", "Pa", Range::positive());
+  spec.only_when("Shape", {"bending", "translation"},
+                 {"Start", "Span", "Amplitude", "Pad stiffness", "Rail lateral inertia",
+                  "Rail Young's modulus"});
+  return spec;
+}
+
 ParameterSpec vehicle_dynamics_parameters() {
   ParameterSpec spec(
       "A vehicle from the mesh (Mesh/Type vehicle, or any mesh of beams, point masses, "
@@ -50,6 +77,13 @@ ParameterSpec vehicle_dynamics_parameters() {
   spec.text("Vertical irregularity", "",
             "Vertical offset of both rails (down positive) as a function of s (variable x) ('' = "
             "none).");
+  spec.sublist("Structure deviation", structure_deviation_parameters(),
+               "A displaced structure under the track (the published bending and translation "
+               "shapes).");
+  spec.flag("Chart", true,
+            "Draw <step>_chart.png (deviation, car body lateral acceleration at the first "
+            "measuring point, the first wheelset's lateral motion and wheel forces with its "
+            "flange impacts) from the histories.");
   spec.real("History interval", 0, "Time between rows of the histories (0: every step).", "s",
             Range::non_negative());
   return spec;

@@ -13,8 +13,11 @@
 #include "framework/solvers/prescribed_saddle_point_solver.hpp"
 #include "framework/time/newmark.hpp"
 #include "framework/time/newton_step.hpp"
+#include "physics/common/chart_script.hpp"
 #include "physics/common/profile_geometry.hpp"
+#include "physics/common/structure_deviation.hpp"
 #include "physics/wheelset_dynamics/vehicle_balance.hpp"
+#include "physics/wheelset_dynamics/vehicle_recorder.hpp"
 #include "physics/wheelset_dynamics/wheelset_contact_deck.hpp"
 #include "physics/wheelset_dynamics/wheelset_system.hpp"
 
@@ -22,20 +25,23 @@ namespace railfe {
 
 namespace {
 
-const char* kSides[2] = {"right", "left"};
-
-// Vertical (Q, up on the wheel) and lateral (Y, towards the track centre on the wheel) forces
-// of wheel \p side (0 right, 1 left), summed over its tread and flange.
-std::array<double, 2> wheel_forces(const std::array<ContactState, n_wheelset_contacts>& states,
-                                   int side) {
-  const int first = 2 * side;
-  const double inward = side == 0 ? -1.0 : 1.0;  // the right wheel's centre side is −y
-  double Q = 0, Y = 0;
-  for (int k = first; k < first + 2; ++k) {
-    Q -= states[k].force[2];
-    Y += inward * states[k].force[1];
-  }
-  return {Q, Y};
+// The deck's Structure deviation sublist.
+StructureDeviationSettings deviation_settings(const Teuchos::ParameterList& step) {
+  const auto& d = step.sublist("Structure deviation");
+  StructureDeviationSettings settings;
+  const std::string shape = d.get<std::string>("Shape");
+  settings.shape = shape == "bending"       ? DeviationShape::bending
+                   : shape == "translation" ? DeviationShape::translation
+                                            : DeviationShape::none;
+  if (settings.shape == DeviationShape::none)
+    return settings;
+  settings.start = d.get<double>("Start");
+  settings.span = d.get<double>("Span");
+  settings.amplitude = d.get<double>("Amplitude");
+  settings.pad_stiffness = d.get<double>("Pad stiffness");
+  settings.rail_inertia = d.get<double>("Rail lateral inertia");
+  settings.rail_modulus = d.get<double>("Rail Young's modulus");
+  return settings;
 }
 
 }  // namespace
@@ -103,14 +109,34 @@ void VehicleDynamicsStep::run(StepContext& context) {
       for (int k = 0; k < n_wheelset_contacts; ++k)
         system.wheelset(w).contact(k).use_table(table);
   }
+  // The rails' lateral offset: the deck's irregularity plus the structure's deviation.
+  const auto irregularity = function_of_x(p.get<std::string>("Lateral irregularity"),
+                                          context.source(), context.path + "/Lateral irregularity");
+  const auto deviation = std::make_shared<StructureDeviation>(deviation_settings(p));
+  const std::function<double(double)> lateral = [irregularity, deviation](double s) {
+    return (irregularity ? irregularity(s) : 0.0) + deviation->rail(s);
+  };
   std::vector<RailedWheelset> railed;
   for (int w = 0; w < n_wheelsets; ++w)
     railed.push_back({mesh.node(wheelsets_[w])[0], system.wheelset(w).unknowns().nodes});
-  RigidRails rails(function_of_x(p.get<std::string>("Lateral irregularity"), context.source(),
-                                 context.path + "/Lateral irregularity"),
+  const double start = p.get<double>("Start");
+  RigidRails rails(lateral,
                    function_of_x(p.get<std::string>("Vertical irregularity"), context.source(),
                                  context.path + "/Vertical irregularity"),
-                   p.get<double>("Start"), V, railed);
+                   start, V, railed);
+  const double end = p.get<double>("End time"), dt = p.get<double>("Time step");
+  if (deviation_settings(p).shape != DeviationShape::none) {
+    // The track's lateral offset along the stretch the vehicle runs over, for charts.
+    CsvWriter file(context.output.staging_path(context.step_name + "_deviation.csv"),
+                   {"s_m", "structure_m", "rail_m"}, root);
+    double first = start, last = start + V * end;
+    for (const RailedWheelset& r : railed) {
+      first = std::min(first, start + r.position);
+      last = std::max(last, start + r.position + V * end);
+    }
+    for (double s = first; s <= last + 1e-9; s += 0.05)
+      file.write_row({s, deviation->structure(s), deviation->rail(s)});
+  }
 
   // The internal nodes on the rails, then the static balance.
   const std::size_t n = system.n_unknowns();
@@ -133,28 +159,8 @@ void VehicleDynamicsStep::run(StepContext& context) {
       states[w] = system.wheelset(w).states(u.data(), v.data());
   };
   evaluate_states();
-  {
-    CsvWriter file(context.output.staging_path(context.step_name + "_static.csv"),
-                   {"wheelset", "wheel", "Q_N", "Y_N", "contact_angle_rad", "rolling_radius_m"},
-                   root);
-    double total = 0, lightest = 1e300, heaviest = 0;
-    for (int w = 0; w < n_wheelsets; ++w)
-      for (int side = 0; side < 2; ++side) {
-        const auto f = wheel_forces(states[w], side);
-        const ContactState& tread = states[w][2 * side];
-        file.write_row({std::to_string(w + 1), kSides[side], CsvWriter::format(f[0]),
-                        CsvWriter::format(f[1]), CsvWriter::format(tread.point.contact_angle),
-                        CsvWriter::format(tread.point.rolling_radius)});
-        total += f[0];
-        lightest = std::min(lightest, f[0]);
-        heaviest = std::max(heaviest, f[0]);
-      }
-    file.write_row({"total", "", CsvWriter::format(total), "", "", ""});
-    file.write_row({"weight", "", CsvWriter::format(balance.weight), "", "", ""});
-    context.summary.add(section, "static wheel load, lightest", lightest, "N");
-    context.summary.add(section, "static wheel load, heaviest", heaviest, "N");
-    context.summary.add(section, "static wheel loads, total", total, "N");
-  }
+  std::vector<std::array<double, 2>> static_loads(n_wheelsets);
+  write_static_loads(context, section, states, balance.weight, static_loads);
 
   // Rolling: each wheelset spins without longitudinal creep at its mean tread radius.
   for (int w = 0; w < n_wheelsets; ++w) {
@@ -180,69 +186,14 @@ void VehicleDynamicsStep::run(StepContext& context) {
   solver.initial_acceleration(0, u.data(), v.data(), a.data());
   NewmarkIntegrator integrator(NewmarkScheme::hht(p.get<double>("Alpha")), n);
 
-  std::vector<std::string> wheelset_columns{"time_s", "iterations"};
-  std::vector<std::string> wheel_columns{"time_s"};
-  for (int w = 0; w < n_wheelsets; ++w) {
-    const std::string name = "w" + std::to_string(w + 1) + "_";
-    for (const char* q : {"y_m", "z_m", "roll_rad", "yaw_rad", "vy_m_per_s", "ay_m_per_s2"})
-      wheelset_columns.push_back(name + q);
-    for (const char* side : kSides)
-      for (const char* q : {"Q_N", "Y_N", "Y_over_Q", "flange"})
-        wheel_columns.push_back(name + side + "_" + q);
-  }
-  std::vector<std::string> point_columns{"time_s"};
-  for (const std::string& name : point_names_)
-    for (const char* q : {"y_m", "z_m", "ay_m_per_s2", "az_m_per_s2"})
-      point_columns.push_back(name + "_" + q);
-  CsvWriter wheelset_file(context.output.staging_path(context.step_name + "_wheelsets.csv"),
-                          wheelset_columns, root);
-  CsvWriter wheel_file(context.output.staging_path(context.step_name + "_wheels.csv"),
-                       wheel_columns, root);
-  CsvWriter point_file(context.output.staging_path(context.step_name + "_points.csv"),
-                       point_columns, root);
-  CsvWriter events(context.output.staging_path(context.step_name + "_contact_events.csv"),
-                   {"time_s", "wheelset", "contact", "event", "N_N"}, root);
   std::vector<Eigen::MatrixXd> point_motion;
   for (GlobalIndex node : points_)
     point_motion.push_back(model_->node_motion(node));
-  const Eigen::Index n_model = system.n_model_unknowns();
-  auto write_rows = [&](double time, int iterations) {
-    std::vector<double> row{time, static_cast<double>(iterations)};
-    for (int w = 0; w < n_wheelsets; ++w) {
-      const std::size_t o = system.wheelset(w).unknowns().wheelset;
-      row.insert(row.end(), {u[o + 1], u[o + 2], u[o + 3], u[o + 5], v[o + 1], a[o + 1]});
-    }
-    wheelset_file.write_row(row);
-    row.assign(1, time);
-    for (int w = 0; w < n_wheelsets; ++w)
-      for (int side = 0; side < 2; ++side) {
-        const auto f = wheel_forces(states[w], side);
-        row.insert(row.end(), {f[0], f[1], f[0] > 0 ? f[1] / f[0] : 0.0,
-                               states[w][2 * side + 1].active ? 1.0 : 0.0});
-      }
-    wheel_file.write_row(row);
-    row.assign(1, time);
-    const Eigen::Map<const Eigen::VectorXd> uu(u.data(), n_model), aa(a.data(), n_model);
-    for (const Eigen::MatrixXd& motion : point_motion) {
-      const Eigen::VectorXd du = motion * uu, acceleration = motion * aa;
-      row.insert(row.end(), {du(1), du(2), acceleration(1), acceleration(2)});
-    }
-    point_file.write_row(row);
-  };
-
-  const double end = p.get<double>("End time"), dt = p.get<double>("Time step");
+  VehicleRecorder recorder(context, system, point_names_, point_motion, static_loads);
   const double interval = p.get<double>("History interval");
   const long n_steps = std::lround(std::ceil(end / dt - 1e-9));
-  write_rows(0, 0);
-  std::vector<std::array<bool, n_wheelset_contacts>> active(n_wheelsets);
-  for (int w = 0; w < n_wheelsets; ++w)
-    for (int k = 0; k < n_wheelset_contacts; ++k)
-      active[w][k] = states[w][k].active;
-  const char* contact_names[n_wheelset_contacts] = {"right_tread", "right_flange", "left_tread",
-                                                    "left_flange"};
+  recorder.record(0, 0, u, v, a, states, true);
   double next_output = interval;
-  std::size_t n_events = 0;
-  double peak_Y_over_Q = 0;
   auto progress = context.progress("time steps", static_cast<double>(n_steps));
   double time = 0;
   for (long step = 0; step < n_steps; ++step) {
@@ -257,28 +208,25 @@ void VehicleDynamicsStep::run(StepContext& context) {
     }
     time = (step + 1) * dt;
     evaluate_states();
-    for (int w = 0; w < n_wheelsets; ++w) {
-      for (int k = 0; k < n_wheelset_contacts; ++k)
-        if (states[w][k].active != active[w][k]) {
-          active[w][k] = states[w][k].active;
-          ++n_events;
-          events.write_row({CsvWriter::format(time), std::to_string(w + 1), contact_names[k],
-                            active[w][k] ? (k % 2 ? "flange contact" : "contact") : "separation",
-                            CsvWriter::format(states[w][k].hertz.load)});
-        }
-      for (int side = 0; side < 2; ++side) {
-        const auto f = wheel_forces(states[w], side);
-        if (f[0] > 0)
-          peak_Y_over_Q = std::max(peak_Y_over_Q, std::abs(f[1] / f[0]));
-      }
-    }
-    if (time >= next_output - 1e-9 * dt || step + 1 == n_steps) {
-      write_rows(time, solver.statistics().last_iterations);
+    const bool row = time >= next_output - 1e-9 * dt || step + 1 == n_steps;
+    recorder.record(time, solver.statistics().last_iterations, u, v, a, states, row);
+    if (row)
       next_output += interval;
-    }
     progress.update(static_cast<double>(step + 1));
   }
   progress.finish();
+  recorder.finish(time, context.summary, section);
+  if (p.get<bool>("Chart")) {
+    const auto path = [&](const char* name) {
+      return context.output.staging_path(context.step_name + name);
+    };
+    draw_chart(context, section, "vehicle_dynamics_chart.py",
+               {path("_wheelsets.csv"), path("_wheels.csv"), path("_points.csv"),
+                path("_flange_impacts.csv"),
+                deviation_settings(p).shape != DeviationShape::none ? path("_deviation.csv") : "-",
+                CsvWriter::format(V), CsvWriter::format(start),
+                CsvWriter::format(railed[0].position), path("_chart.png")});
+  }
 
   const NewtonStatistics& statistics = solver.statistics();
   context.summary.add(section, "wheelsets", static_cast<double>(n_wheelsets));
@@ -291,13 +239,39 @@ void VehicleDynamicsStep::run(StepContext& context) {
   context.summary.add(section, "wall time per Newton iteration (solve only)",
                       statistics.iterations ? statistics.seconds / statistics.iterations : 0.0,
                       "s");
-  context.summary.add(section, "contact events", static_cast<double>(n_events));
-  context.summary.add(section, "peak |Y/Q|", peak_Y_over_Q);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   context.summary.add(section, "wall time", seconds, "s");
   context.summary.add(section, "wall time per step", seconds / std::max(1L, n_steps), "s");
   context.summary.add(section, "simulated time per wall time", end / seconds);
+}
+
+void VehicleDynamicsStep::write_static_loads(
+    StepContext& context, const std::string& section,
+    const std::vector<std::array<ContactState, n_wheelset_contacts>>& states, double weight,
+    std::vector<std::array<double, 2>>& loads) const {
+  CsvWriter file(context.output.staging_path(context.step_name + "_static.csv"),
+                 {"wheelset", "wheel", "Q_N", "Y_N", "contact_angle_rad", "rolling_radius_m"},
+                 context.model.comm().is_root());
+  const char* sides[2] = {"right", "left"};
+  double total = 0, lightest = 1e300, heaviest = 0;
+  for (std::size_t w = 0; w < states.size(); ++w)
+    for (int side = 0; side < 2; ++side) {
+      const auto f = wheel_forces(states[w], side);
+      const ContactState& tread = states[w][2 * side];
+      file.write_row({std::to_string(w + 1), sides[side], CsvWriter::format(f[0]),
+                      CsvWriter::format(f[1]), CsvWriter::format(tread.point.contact_angle),
+                      CsvWriter::format(tread.point.rolling_radius)});
+      loads[w][side] = f[0];
+      total += f[0];
+      lightest = std::min(lightest, f[0]);
+      heaviest = std::max(heaviest, f[0]);
+    }
+  file.write_row({"total", "", CsvWriter::format(total), "", "", ""});
+  file.write_row({"weight", "", CsvWriter::format(weight), "", "", ""});
+  context.summary.add(section, "static wheel load, lightest", lightest, "N");
+  context.summary.add(section, "static wheel load, heaviest", heaviest, "N");
+  context.summary.add(section, "static wheel loads, total", total, "N");
 }
 
 }  // namespace railfe

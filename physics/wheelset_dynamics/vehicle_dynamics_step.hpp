@@ -8,6 +8,7 @@
 #include "contact/geometry/wheel_rail_geometry.hpp"
 #include "framework/app/module.hpp"
 #include "physics/common/dense_structural_model.hpp"
+#include "physics/wheelset_dynamics/wheelset_contacts.hpp"
 
 namespace railfe {
 
@@ -24,6 +25,11 @@ class VehicleDynamicsStep : public AnalysisStep {
   void run(StepContext& context) override;
 
  private:
+  // Writes <step>_static.csv and the summary's static loads; \p loads gets each wheel's Q.
+  void write_static_loads(StepContext& context, const std::string& section,
+                          const std::vector<std::array<ContactState, n_wheelset_contacts>>& states,
+                          double weight, std::vector<std::array<double, 2>>& loads) const;
+
   const Teuchos::ParameterList* parameters_;
   std::shared_ptr<WheelRailGeometry> geometry_;
   std::unique_ptr<DenseStructuralModel> model_;
