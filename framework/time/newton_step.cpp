@@ -280,7 +280,7 @@ void NewtonStepSolver::iterate(const StepState& state, double* a) {
       fail(state, "Newton iteration " + failure);
 
     if (constrained) {
-      if (!linear || iteration == 0) {
+      if ((!linear && !settings_.tangent_once_per_step) || iteration == 0) {
         saddle_->factor(u_.data(), v_.data(), coefficients, rows_next_);
         ++statistics_.factorizations;
       }

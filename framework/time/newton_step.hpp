@@ -45,6 +45,9 @@ struct NewtonSettings {
   /// With constraints the first correction is always taken whole: it moves the unknowns onto
   /// the constraint rows, a change ‖R‖ does not see.
   bool line_search = false;
+  /// Modified Newton: the matrix of the step's first iteration serves its later ones (one
+  /// tangent and factorization per step; more, cheaper iterations). Constrained steps only.
+  bool tangent_once_per_step = false;
 };
 
 /// A step whose Newton iteration did not converge (or met a non-finite residual).

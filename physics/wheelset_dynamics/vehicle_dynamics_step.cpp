@@ -160,7 +160,7 @@ void VehicleDynamicsStep::run(StepContext& context) {
   };
   evaluate_states();
   std::vector<std::array<double, 2>> static_loads(n_wheelsets);
-  write_static_loads(context, section, states, balance.weight, static_loads);
+  write_static_loads(context, section, states, static_loads);
 
   // Rolling: each wheelset spins without longitudinal creep at its mean tread radius.
   for (int w = 0; w < n_wheelsets; ++w) {
@@ -172,6 +172,7 @@ void VehicleDynamicsStep::run(StepContext& context) {
   NewtonSettings newton;
   newton.max_iterations = p.get<int>("Newton iterations");
   newton.line_search = p.get<bool>("Line search");
+  newton.tangent_once_per_step = p.get<std::string>("Newton tangent") == "once per step";
   newton.residual_relative = newton.increment_relative = p.get<double>("Newton tolerance");
   PrescribedSaddlePointSolver saddle(system);
   NewtonStepSolver solver(system, newton);
@@ -248,7 +249,7 @@ void VehicleDynamicsStep::run(StepContext& context) {
 
 void VehicleDynamicsStep::write_static_loads(
     StepContext& context, const std::string& section,
-    const std::vector<std::array<ContactState, n_wheelset_contacts>>& states, double weight,
+    const std::vector<std::array<ContactState, n_wheelset_contacts>>& states,
     std::vector<std::array<double, 2>>& loads) const {
   CsvWriter file(context.output.staging_path(context.step_name + "_static.csv"),
                  {"wheelset", "wheel", "Q_N", "Y_N", "contact_angle_rad", "rolling_radius_m"},
@@ -267,8 +268,6 @@ void VehicleDynamicsStep::write_static_loads(
       lightest = std::min(lightest, f[0]);
       heaviest = std::max(heaviest, f[0]);
     }
-  file.write_row({"total", "", CsvWriter::format(total), "", "", ""});
-  file.write_row({"weight", "", CsvWriter::format(weight), "", "", ""});
   context.summary.add(section, "static wheel load, lightest", lightest, "N");
   context.summary.add(section, "static wheel load, heaviest", heaviest, "N");
   context.summary.add(section, "static wheel loads, total", total, "N");

@@ -28,7 +28,7 @@ class VehicleDynamicsStep : public AnalysisStep {
   // Writes <step>_static.csv and the summary's static loads; \p loads gets each wheel's Q.
   void write_static_loads(StepContext& context, const std::string& section,
                           const std::vector<std::array<ContactState, n_wheelset_contacts>>& states,
-                          double weight, std::vector<std::array<double, 2>>& loads) const;
+                          std::vector<std::array<double, 2>>& loads) const;
 
   const Teuchos::ParameterList* parameters_;
   std::shared_ptr<WheelRailGeometry> geometry_;

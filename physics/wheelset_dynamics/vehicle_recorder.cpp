@@ -69,6 +69,7 @@ VehicleRecorder::VehicleRecorder(StepContext& context, VehicleSystem& system,
               {"time_s", "wheelset", "contact", "event", "N_N"}, root_),
       impacts_path_(context.output.staging_path(context.step_name + "_flange_impacts.csv")),
       safety_path_(context.output.staging_path(context.step_name + "_safety.csv")),
+      comfort_path_(context.output.staging_path(context.step_name + "_comfort.csv")),
       active_(system.n_wheelsets()),
       open_impact_(system.n_wheelsets(), {-1, -1}),
       peaks_(system.n_wheelsets()),
@@ -177,10 +178,12 @@ void VehicleRecorder::finish(double, RunSummary& summary, const std::string& sec
         worst_unloading = std::max(worst_unloading, p.unloading);
         worst_Y = std::max(worst_Y, p.Y);
       }
+  }
+  {
+    CsvWriter file(comfort_path_, {"point", "peak_ay_m_per_s2", "rms_ay_m_per_s2"}, root_);
     for (std::size_t p = 0; p < point_names_.size(); ++p) {
       const double rms = std::sqrt(sum_ay2_[p] / std::max<std::size_t>(samples_, 1));
-      file.write_row({point_names_[p], "lateral acceleration: peak, RMS (m/s^2)",
-                      CsvWriter::format(peak_ay_[p]), CsvWriter::format(rms), "", ""});
+      file.write_row({point_names_[p], CsvWriter::format(peak_ay_[p]), CsvWriter::format(rms)});
       summary.add(section, "peak lateral acceleration at " + point_names_[p], peak_ay_[p], "m/s^2");
       summary.add(section, "RMS lateral acceleration at " + point_names_[p], rms, "m/s^2");
     }

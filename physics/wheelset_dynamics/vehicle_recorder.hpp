@@ -57,7 +57,7 @@ class VehicleRecorder {
   std::vector<Eigen::MatrixXd> point_motion_;
   std::vector<std::array<double, 2>> static_loads_;
   CsvWriter wheelsets_, wheels_, points_, events_;
-  std::string impacts_path_, safety_path_;
+  std::string impacts_path_, safety_path_, comfort_path_;
   std::vector<std::array<bool, n_wheelset_contacts>> active_;
   std::vector<std::array<int, 2>> open_impact_;  // index into impacts_, or -1
   std::vector<Impact> impacts_;
