@@ -190,6 +190,13 @@ ContactState WheelRailContact::evaluate(const ContactKinematics& state) {
       return forces_at(state, point, nullptr);
     }
   }
+  if (settings_.offline_table) {
+    if (!table_)
+      throw std::logic_error("WheelRailContact: the offline-table model needs use_table()");
+    const auto start = table_->start(side_, flange_, pose.lateral);
+    return forces_at(state, contact_at(*geometry_, side_, flange_, pose, start[0], start[1]),
+                     nullptr);
+  }
   if (!started_) {
     const GapSample sample = least_gap_sample(*geometry_, side_, flange_, pose, 200, search_);
     set_start(sample.s_wheel, sample.s_rail);

@@ -57,6 +57,10 @@ struct WheelRailContactSettings {
   /// within a/b ≈ 1/5..5; 0 refuses such a contact instead (RunError).
   double curvature_ratio_limit = 10;
   bool trust_region = true;  ///< the contact search's trust region (false: plain Newton)
+  /// The contact points from the lookup table at the wheelset's lateral shift, not searched
+  /// (the gap, normal and curvatures taken there): the offline-table model of programs such as
+  /// DIASTARS. Needs use_table().
+  bool offline_table = false;
   /// The creep forces' share of the tangent damping: false, forward differences of the theory
   /// (consistent); true, Kalker's linear damping matrix Jᵀ D J at the current ellipse, as the
   /// seed model does (exact for the linear theory, an approximation for saturating ones).

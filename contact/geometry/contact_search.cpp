@@ -73,7 +73,34 @@ Evaluation evaluate(const WheelRailGeometry& geometry, TrackSide side, const Whe
   return e;
 }
 
+// The contact point of evaluation \p e (status left to the caller).
+ContactPoint point_of(const WheelRailGeometry&, TrackSide side, bool flange, const Evaluation& e) {
+  ContactPoint point;
+  point.flange = flange;
+  point.s_wheel = e.s_wheel;
+  point.s_rail = e.s_rail;
+  point.rail_point = e.rail.p;
+  point.x = e.locus.x;
+  point.gap = e.gap;
+  point.normal = e.normal;
+  const double towards_centre = side == TrackSide::right ? -1.0 : 1.0;
+  point.contact_angle = std::atan2(towards_centre * e.normal.y, -e.normal.z);
+  point.rolling_radius = e.locus.radius;
+  point.wheel_rolling_curvature = e.locus.rolling_curvature;
+  point.rail_lateral_curvature = signed_curvature(e.rail.d1, e.rail.d2);
+  point.wheel_lateral_curvature = e.relative_lateral - point.rail_lateral_curvature;
+  return point;
+}
+
 }  // namespace
+
+ContactPoint contact_at(const WheelRailGeometry& geometry, TrackSide side, bool flange,
+                        const WheelsetPose& pose, double s_wheel, double s_rail) {
+  ContactPoint point =
+      point_of(geometry, side, flange, evaluate(geometry, side, pose, s_wheel, s_rail));
+  point.status = SearchStatus::converged;
+  return point;
+}
 
 std::string status_name(SearchStatus status) {
   switch (status) {
@@ -152,21 +179,8 @@ ContactPoint search_contact(const WheelRailGeometry& geometry, TrackSide side, b
     else if (radius <= settings.tolerance)
       break;
   }
-  ContactPoint point;
-  point.flange = flange;
+  ContactPoint point = point_of(geometry, side, flange, e);
   point.iterations = iteration;
-  point.s_wheel = e.s_wheel;
-  point.s_rail = e.s_rail;
-  point.rail_point = e.rail.p;
-  point.x = e.locus.x;
-  point.gap = e.gap;
-  point.normal = e.normal;
-  const double towards_centre = side == TrackSide::right ? -1.0 : 1.0;
-  point.contact_angle = std::atan2(towards_centre * e.normal.y, -e.normal.z);
-  point.rolling_radius = e.locus.radius;
-  point.wheel_rolling_curvature = e.locus.rolling_curvature;
-  point.rail_lateral_curvature = signed_curvature(e.rail.d1, e.rail.d2);
-  point.wheel_lateral_curvature = e.relative_lateral - point.rail_lateral_curvature;
   const bool at_end = e.s_wheel <= range[0] || e.s_wheel >= range[1];
   if (blocked || (at_end && !converged))
     point.status = SearchStatus::part_boundary;

@@ -79,6 +79,12 @@ ContactPoint search_contact(const WheelRailGeometry& geometry, TrackSide side, b
                             const WheelsetPose& pose, double s_wheel, double s_rail,
                             const SearchSettings& settings = {});
 
+/// The contact point at the wheel parameter \p s_wheel held fixed (its foot on the rail found
+/// from \p s_rail, the gap, normal and curvatures there), status converged: the point an
+/// offline contact table prescribes, with no search along the wheel.
+ContactPoint contact_at(const WheelRailGeometry& geometry, TrackSide side, bool flange,
+                        const WheelsetPose& pose, double s_wheel, double s_rail);
+
 /// A sampled point of a wheel part and its gap.
 struct GapSample {
   double s_wheel = 0;  ///< wheel profile parameter

@@ -71,10 +71,12 @@ ParameterSpec vehicle_dynamics_parameters() {
   spec.flag("Line search", true,
             "Halve a Newton correction that raises the residual; false: plain Newton.");
   spec.choice("Newton tangent", "every iteration",
-              {{"every iteration", "full Newton: the tangent and its factorization anew at every "
-                                   "iteration"},
-               {"once per step", "modified Newton: the first iteration's matrix for the whole "
-                                 "step (cheaper iterations, usually more of them)"}},
+              {{"every iteration",
+                "full Newton: the tangent and its factorization anew at every "
+                "iteration"},
+               {"once per step",
+                "modified Newton: the first iteration's matrix for the whole "
+                "step (cheaper iterations, usually more of them)"}},
               "How often Newton's matrix is formed.");
   spec.real("Gravity", 9.81, "g, along +z (down).", "m/s^2", Range::non_negative());
   spec.text("Lateral irregularity", "",

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iostream>
 #include <sstream>
 
 #include "framework/base/error.hpp"
@@ -54,6 +55,7 @@ void VehicleDynamicsStep::check(const CheckContext& context) {
   const Mesh& mesh = context.model.mesh();
   const std::string& deck = context.source();
   geometry_ = read_profile_geometry(p, context);
+  check_contact_parameters(*parameters_, context.source(), context.path);
   for (const char* key : {"Lateral irregularity", "Vertical irregularity"})
     function_of_x(p.get<std::string>(key), deck, context.path + "/" + key);
   if (p.get<double>("Time step") > p.get<double>("End time"))
@@ -195,6 +197,7 @@ void VehicleDynamicsStep::run(StepContext& context) {
   const long n_steps = std::lround(std::ceil(end / dt - 1e-9));
   recorder.record(0, 0, u, v, a, states, true);
   double next_output = interval;
+  std::vector<double> airborne_since(n_wheelsets, 1e300);
   auto progress = context.progress("time steps", static_cast<double>(n_steps));
   double time = 0;
   for (long step = 0; step < n_steps; ++step) {
@@ -209,11 +212,31 @@ void VehicleDynamicsStep::run(StepContext& context) {
     }
     time = (step + 1) * dt;
     evaluate_states();
-    const bool row = time >= next_output - 1e-9 * dt || step + 1 == n_steps;
+    // A wheelset with no wheel touching for 50 ms has left the rails (a climb or a jump over):
+    // nothing computed after that means anything, so the run ends there, reported.
+    int derailed = -1;
+    for (int w = 0; w < n_wheelsets; ++w) {
+      const bool airborne = std::none_of(states[w].begin(), states[w].end(),
+                                         [](const ContactState& c) { return c.active; });
+      airborne_since[w] = airborne ? std::min(airborne_since[w], time) : 1e300;
+      if (time - airborne_since[w] >= 0.05 - 1e-9 * dt)
+        derailed = w;
+    }
+    const bool row = time >= next_output - 1e-9 * dt || step + 1 == n_steps || derailed >= 0;
     recorder.record(time, solver.statistics().last_iterations, u, v, a, states, row);
     if (row)
       next_output += interval;
     progress.update(static_cast<double>(step + 1));
+    if (derailed >= 0) {
+      context.summary.add(section,
+                          "wheelset " + std::to_string(derailed + 1) + " left the rails at",
+                          airborne_since[derailed], "s");
+      if (root)
+        std::cerr << "warning: " << context.path << ": wheelset " << derailed + 1
+                  << " left the rails at t = " << airborne_since[derailed]
+                  << " s (no wheel touching for 50 ms); the run ends at t = " << time << " s\n";
+      break;
+    }
   }
   progress.finish();
   recorder.finish(time, context.summary, section);

@@ -1,5 +1,7 @@
 #include "physics/wheelset_dynamics/wheelset_contact_deck.hpp"
 
+#include "framework/base/error.hpp"
+
 namespace railfe {
 
 ParameterSpec contact_parameters() {
@@ -41,6 +43,13 @@ ParameterSpec contact_parameters() {
               {{"trust-region", "Newton on the wheel parameter within a trust region"},
                {"plain Newton", "full Newton steps, clipped to the part (for comparison)"}},
               "The contact-point search (contact/geometry/contact_search.hpp).");
+  spec.choice("Geometry", "online search",
+              {{"online search", "every evaluation searches the contact points on the profiles"},
+               {"offline table",
+                "the contact points are the lookup table's at the wheelset's lateral shift, the "
+                "gap taken there (the offline-table model of programs such as DIASTARS; needs "
+                "Lookup table)"}},
+              "Where the contact points come from.");
   spec.choice("Yaw", "neglected",
               {{"neglected", "the contact search ignores yaw (the seed's choice)"},
                {"exact", "the search works on the yawed wheel's contact locus"}},
@@ -60,7 +69,18 @@ WheelRailContactSettings contact_settings(const Teuchos::ParameterList& step) {
   settings.curvature_ratio_limit = c.get<double>("Curvature ratio limit");
   settings.trust_region = c.get<std::string>("Search") == "trust-region";
   settings.kalker_damping = c.get<std::string>("Creep tangent") == "Kalker damping";
+  settings.offline_table = c.get<std::string>("Geometry") == "offline table";
   return settings;
+}
+
+void check_contact_parameters(const Teuchos::ParameterList& step, const std::string& source,
+                              const std::string& path) {
+  const auto& c = step.sublist("Contact");
+  if (c.get<std::string>("Geometry") == "offline table" && !c.get<bool>("Lookup table"))
+    throw_input_error(source, path + "/Contact/Geometry",
+                      "'offline table' takes its contact points from the lookup table, which "
+                      "Lookup table = false switches off",
+                      "Lookup table true with it, or 'online search'");
 }
 
 }  // namespace railfe

@@ -6,6 +6,8 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include <string>
+
 #include "contact/enforcement/wheel_rail_contact.hpp"
 #include "framework/deck/parameter_spec.hpp"
 
@@ -16,5 +18,10 @@ ParameterSpec contact_parameters();
 
 /// The contact element's settings from the validated Contact sublist of \p step.
 WheelRailContactSettings contact_settings(const Teuchos::ParameterList& step);
+
+/// Throws InputError naming \p source and \p path (the step's) for Contact settings that
+/// contradict each other (an offline table without the lookup table).
+void check_contact_parameters(const Teuchos::ParameterList& step, const std::string& source,
+                              const std::string& path);
 
 }  // namespace railfe

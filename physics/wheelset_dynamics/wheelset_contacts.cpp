@@ -88,7 +88,7 @@ void WheelsetContacts::for_each_tangent_entry(const double* u, const double* v, 
     Eigen::Index global[9];
     for (int i = 0; i < 9; ++i)
       global[i] = static_cast<Eigen::Index>(i < 6 ? unknowns_.wheelset + i
-                                                 : unknowns_.nodes + 3 * k + (i - 6));
+                                                  : unknowns_.nodes + 3 * k + (i - 6));
     for (int i = 0; i < 9; ++i)
       for (int j = 0; j < 9; ++j)
         add(global[i], global[j], kt[i * 9 + j], ct[i * 9 + j]);
@@ -103,9 +103,8 @@ void WheelsetContacts::add_tangent(const double* u, const double* v, Eigen::Matr
   });
 }
 
-void WheelsetContacts::add_tangent_matrix(const double* u, const double* v,
-                                          double stiffness_scale, double damping_scale,
-                                          Eigen::MatrixXd& matrix) {
+void WheelsetContacts::add_tangent_matrix(const double* u, const double* v, double stiffness_scale,
+                                          double damping_scale, Eigen::MatrixXd& matrix) {
   for_each_tangent_entry(u, v, [&](Eigen::Index i, Eigen::Index j, double k, double c) {
     matrix(i, j) += stiffness_scale * k + damping_scale * c;
   });

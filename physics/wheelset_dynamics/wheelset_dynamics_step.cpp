@@ -45,6 +45,7 @@ WheelsetDynamicsStep::WheelsetDynamicsStep(const Teuchos::ParameterList& paramet
 
 void WheelsetDynamicsStep::check(const CheckContext& context) {
   geometry_ = read_profile_geometry(*parameters_, context);
+  check_contact_parameters(*parameters_, context.source(), context.path);
   for (const char* key : {"Lateral irregularity", "Vertical irregularity"})
     function_of_x(parameters_->get<std::string>(key), context.source(), context.path + "/" + key);
   const std::string force = parameters_->get<std::string>("Lateral force");
