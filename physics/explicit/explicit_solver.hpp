@@ -113,7 +113,14 @@ class ExplicitSolver {
   void restore(const SolverState& state);
 
  private:
-  void evaluate_forces(double time, double dt);
+  /// gravity_now_ at \p time.
+  void set_gravity(double time);
+  /// Zeroes the internal forces and sets the applied ones (gravity, loads) at \p time for
+  /// evaluate_forces(); step() does the same inside its predictor pass.
+  void prepare_forces(double time);
+  /// Internal forces, the residual (applied minus internal, springs, contact) and the stable
+  /// step, after prepare_forces(); \p dt is the step just taken (0 at the start).
+  void evaluate_forces(double dt);
   void calibrate_stable_step();
   NodalArrays arrays();
   double kinetic_energy_local() const;
