@@ -190,9 +190,12 @@ ContactState WheelRailContact::evaluate(const ContactKinematics& state) {
       return forces_at(state, point, nullptr);
     }
   }
-  if (settings_.offline_table) {
-    if (!table_)
-      throw std::logic_error("WheelRailContact: the offline-table model needs use_table()");
+  if (settings_.offline_table && !table_)
+    throw std::logic_error("WheelRailContact: the offline-table model needs use_table()");
+  // Beyond the table's shifts (a wheel climbing its flange past every rigid pose of the pair)
+  // the offline model has no point: there it searches, as the online model does.
+  if (settings_.offline_table && table_->covers(pose.lateral)) {
+    ++offline_points_;
     const auto start = table_->start(side_, flange_, pose.lateral);
     return forces_at(state, contact_at(*geometry_, side_, flange_, pose, start[0], start[1]),
                      nullptr);

@@ -59,7 +59,7 @@ struct WheelRailContactSettings {
   bool trust_region = true;  ///< the contact search's trust region (false: plain Newton)
   /// The contact points from the lookup table at the wheelset's lateral shift, not searched
   /// (the gap, normal and curvatures taken there): the offline-table model of programs such as
-  /// DIASTARS. Needs use_table().
+  /// DIASTARS. Needs use_table(); beyond the table's shifts the points are searched.
   bool offline_table = false;
   /// The creep forces' share of the tangent damping: false, forward differences of the theory
   /// (consistent); true, Kalker's linear damping matrix Jᵀ D J at the current ellipse, as the
@@ -126,6 +126,9 @@ class WheelRailContact {
   /// Evaluations of a flange the lookup table showed farther than kFarFlangeGap from its rail
   /// (not searched).
   std::size_t far_flanges() const { return far_flanges_; }
+  /// Evaluations that took their point from the offline table (WheelRailContactSettings::
+  /// offline_table); the others were beyond the table's shifts and searched.
+  std::size_t offline_points() const { return offline_points_; }
   /// A flange whose rigid-contact gap exceeds this is not searched (m).
   static constexpr double kFarFlangeGap = 2e-3;
   /// "right tread", "left flange", ...
@@ -162,7 +165,7 @@ class WheelRailContact {
   WheelRailContactSettings settings_;
   double modulus_ = 0, shear_modulus_ = 0, poisson_ = 0;
   std::shared_ptr<const ContactTable> table_;
-  std::size_t table_jumps_ = 0, edge_contacts_ = 0, far_flanges_ = 0;
+  std::size_t table_jumps_ = 0, edge_contacts_ = 0, far_flanges_ = 0, offline_points_ = 0;
   SearchSettings search_;  // the stretch searched
   bool started_ = false;
   double s_wheel_ = 0, s_rail_ = 0;

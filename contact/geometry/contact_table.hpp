@@ -44,6 +44,10 @@ class ContactTable {
   /// Start point (s_wheel, s_rail) for the online search of \p side's tread or flange at
   /// \p lateral (linear interpolation, clamped to the table's range).
   std::array<double, 2> start(TrackSide side, bool flange, double lateral) const;
+  /// Whether \p lateral lies within the table's shifts.
+  bool covers(double lateral) const {
+    return lateral >= first_ && lateral <= first_ + step_ * static_cast<double>(rows_.size() - 1);
+  }
   /// The gap of \p side's tread or flange part at the rigid contact of \p lateral (m, linear
   /// interpolation, clamped to the table's range): how far that part is from touching.
   double part_gap(TrackSide side, bool flange, double lateral) const;

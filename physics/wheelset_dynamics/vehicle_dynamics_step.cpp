@@ -72,6 +72,22 @@ void VehicleDynamicsStep::check(const CheckContext& context) {
   wheelsets_ = set.nodes;
   std::sort(wheelsets_.begin(), wheelsets_.end(),
             [&mesh](GlobalIndex a, GlobalIndex b) { return mesh.node(a)[0] > mesh.node(b)[0]; });
+  // The contact element places each wheel's profile about the wheelset centre with the track's
+  // nominal rolling radius: a mesh whose wheelset centres sit at another height would give the
+  // suspensions the wrong levers.
+  const double radius = geometry_->wheelset().nominal_radius;
+  for (GlobalIndex node : wheelsets_) {
+    const double height = -mesh.node(node)[2];
+    std::ostringstream what;
+    what << "(" << radius << " m) differs from the height of wheelset node " << node + 1
+         << " above the rails (" << height
+         << " m; the mesh is in track axes, z down), which the suspensions' levers are measured "
+            "from";
+    if (std::abs(height - radius) > 1e-3)
+      throw_input_error(deck, context.path + "/Track/Nominal radius", what.str(),
+                        "the same radius in both (Mesh/Vehicle/Wheel radius for the vehicle "
+                        "generator)");
+  }
   for (GlobalIndex node : wheelsets_)
     if (model_->unknown_of(node) < 0)
       throw_input_error(deck, set_path,
@@ -79,6 +95,23 @@ void VehicleDynamicsStep::check(const CheckContext& context) {
                             ", which a rigid link carries; a wheelset's motions need a node of "
                             "its own",
                         "the wheelset centres (the masters of their links)");
+  const std::string reference = p.get<std::string>("Compare with step");
+  if (!reference.empty()) {
+    const auto& steps = context.model.deck().parameters->sublist("Steps");
+    bool earlier = false;
+    for (auto it = steps.begin(); it != steps.end(); ++it) {
+      const std::string name = steps.name(it);
+      if (name == context.step_name)
+        break;
+      if (name == reference && steps.isSublist(name) &&
+          steps.sublist(name).get<std::string>("Module") == "vehicle dynamics")
+        earlier = true;
+    }
+    if (!earlier)
+      throw_input_error(deck, context.path + "/Compare with step",
+                        "'" + reference + "' is not a vehicle dynamics step before this one",
+                        "the name of an earlier vehicle dynamics step of the deck");
+  }
   points_.clear();
   point_names_.clear();
   for (const std::string& name : p.get<Teuchos::Array<std::string>>("Measuring points")) {
@@ -199,6 +232,7 @@ void VehicleDynamicsStep::run(StepContext& context) {
   double next_output = interval;
   std::vector<double> airborne_since(n_wheelsets, 1e300);
   auto progress = context.progress("time steps", static_cast<double>(n_steps));
+  const auto stepping_start = std::chrono::steady_clock::now();
   double time = 0;
   for (long step = 0; step < n_steps; ++step) {
     try {
@@ -239,8 +273,11 @@ void VehicleDynamicsStep::run(StepContext& context) {
     }
   }
   progress.finish();
+  const double stepping =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - stepping_start).count();
   recorder.finish(time, context.summary, section);
   if (p.get<bool>("Chart")) {
+    const std::string reference = p.get<std::string>("Compare with step");
     const auto path = [&](const char* name) {
       return context.output.staging_path(context.step_name + name);
     };
@@ -249,10 +286,22 @@ void VehicleDynamicsStep::run(StepContext& context) {
                 path("_flange_impacts.csv"),
                 deviation_settings(p).shape != DeviationShape::none ? path("_deviation.csv") : "-",
                 CsvWriter::format(V), CsvWriter::format(start),
-                CsvWriter::format(railed[0].position), path("_chart.png")});
+                CsvWriter::format(railed[0].position), path("_chart.png"), context.step_name,
+                reference.empty() ? "" : context.output.staging_path(reference), reference});
   }
 
   const NewtonStatistics& statistics = solver.statistics();
+  std::size_t jumps = 0, offline = 0;
+  for (int w = 0; w < n_wheelsets; ++w)
+    for (int k = 0; k < n_wheelset_contacts; ++k) {
+      jumps += system.wheelset(w).contact(k).table_jumps();
+      offline += system.wheelset(w).contact(k).offline_points();
+    }
+  context.summary.add(section, "contact points taken from the lookup table (jumps)",
+                      static_cast<double>(jumps));
+  if (contact_settings(p).offline_table)
+    context.summary.add(section, "contact points from the offline table (the rest searched)",
+                        static_cast<double>(offline));
   context.summary.add(section, "wheelsets", static_cast<double>(n_wheelsets));
   context.summary.add(section, "unknowns (vehicle, internal nodes)", static_cast<double>(n));
   context.summary.add(section, "steps", static_cast<double>(statistics.steps));
@@ -267,7 +316,8 @@ void VehicleDynamicsStep::run(StepContext& context) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   context.summary.add(section, "wall time", seconds, "s");
   context.summary.add(section, "wall time per step", seconds / std::max(1L, n_steps), "s");
-  context.summary.add(section, "simulated time per wall time", end / seconds);
+  context.summary.add(section, "wall time of the time steps (with their output)", stepping, "s");
+  context.summary.add(section, "simulated time per wall time of the time steps", time / stepping);
 }
 
 void VehicleDynamicsStep::write_static_loads(

@@ -14,7 +14,8 @@ const char* kContactNames[n_wheelset_contacts] = {"right_tread", "right_flange",
 std::vector<std::string> wheelset_columns(int n) {
   std::vector<std::string> columns{"time_s", "iterations"};
   for (int w = 0; w < n; ++w)
-    for (const char* q : {"y_m", "z_m", "roll_rad", "yaw_rad", "vy_m_per_s", "ay_m_per_s2"})
+    for (const char* q :
+         {"x_m", "y_m", "z_m", "roll_rad", "spin_rad", "yaw_rad", "vy_m_per_s", "ay_m_per_s2"})
       columns.push_back("w" + std::to_string(w + 1) + "_" + q);
   return columns;
 }
@@ -134,7 +135,8 @@ void VehicleRecorder::record(
   std::vector<double> row{time, static_cast<double>(iterations)};
   for (int w = 0; w < n; ++w) {
     const std::size_t o = system_.wheelset(w).unknowns().wheelset;
-    row.insert(row.end(), {u[o + 1], u[o + 2], u[o + 3], u[o + 5], v[o + 1], a[o + 1]});
+    row.insert(row.end(),
+               {u[o], u[o + 1], u[o + 2], u[o + 3], u[o + 4], u[o + 5], v[o + 1], a[o + 1]});
   }
   wheelsets_.write_row(row);
   row.assign(1, time);
