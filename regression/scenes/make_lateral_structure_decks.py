@@ -11,69 +11,16 @@ Run from the repository root: /usr/bin/python3 regression/scenes/make_lateral_st
 """
 import csv
 import os
+import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-PARAMETERS = os.path.join(ROOT, "regression", "studies", "vehicle_parameters.csv")
+sys.path.insert(0, os.path.join(ROOT, "regression", "studies"))
+import vehicle_modes_fit  # noqa: E402  (the parameters and the deck's vehicle)
+
+PARAMETERS = vehicle_modes_fit.CSV_PATH
 YAW_DAMPING = 4e6  # N m s/rad per bogie (vehicle_critical_speed.py: stable to 104 m/s)
 SPEED = 300 / 3.6
 REACH = 0.5  # s: when the first wheelset reaches the deviation
-
-
-def vehicle_xml(p):
-    g = lambda k: "%.6g" % p[k]
-    return f"""  <ParameterList name="Mesh">
-    <Parameter name="Type" type="string" value="vehicle"/>
-    <ParameterList name="Vehicle">
-      <Parameter name="Half bogie spacing" type="double" value="{g('half_bogie_spacing')}"/>
-      <Parameter name="Half wheelbase" type="double" value="{g('half_wheelbase')}"/>
-      <Parameter name="Wheel radius" type="double" value="0.43"/>
-      <Parameter name="Car body height" type="double" value="{g('car_body_cg_height')}"/>
-      <Parameter name="Bogie height" type="double" value="{g('bogie_cg_height')}"/>
-      <Parameter name="Primary half span" type="double" value="{g('primary_half_span')}"/>
-      <Parameter name="Secondary half span" type="double" value="{g('secondary_half_span')}"/>
-      <Parameter name="Secondary height" type="double" value="{g('secondary_height')}"/>
-      <Parameter name="Secondary rotation" type="bool" value="true"/>
-    </ParameterList>
-  </ParameterList>
-  <ParameterList name="Sections">
-    <ParameterList name="car body">
-      <Parameter name="Blocks" type="Array(string)" value="{{car_body}}"/>
-      <Parameter name="Element" type="string" value="point mass"/>
-      <Parameter name="Mass" type="double" value="{g('car_body_mass')}"/>
-      <Parameter name="Inertia" type="Array(double)" value="{{{g('car_body_inertia_x')}, {g('car_body_inertia_y')}, {g('car_body_inertia_z')}}}"/>
-    </ParameterList>
-    <ParameterList name="bogie">
-      <Parameter name="Blocks" type="Array(string)" value="{{bogies}}"/>
-      <Parameter name="Element" type="string" value="point mass"/>
-      <Parameter name="Mass" type="double" value="{g('bogie_mass')}"/>
-      <Parameter name="Inertia" type="Array(double)" value="{{{g('bogie_inertia_x')}, {g('bogie_inertia_y')}, {g('bogie_inertia_z')}}}"/>
-    </ParameterList>
-    <ParameterList name="wheelset">
-      <Parameter name="Blocks" type="Array(string)" value="{{wheelsets}}"/>
-      <Parameter name="Element" type="string" value="point mass"/>
-      <Parameter name="Mass" type="double" value="{g('wheelset_mass')}"/>
-      <Parameter name="Inertia" type="Array(double)" value="{{{g('wheelset_inertia_x')}, {g('wheelset_inertia_y')}, {g('wheelset_inertia_z')}}}"/>
-    </ParameterList>
-    <ParameterList name="axle box">
-      <Parameter name="Blocks" type="Array(string)" value="{{primary}}"/>
-      <Parameter name="Element" type="string" value="spring-damper"/>
-      <Parameter name="Stiffness" type="Array(double)" value="{{{g('primary_stiffness_x')}, {g('primary_stiffness_y')}, {g('primary_stiffness_z')}, 0, 0, 0}}"/>
-      <Parameter name="Damping" type="Array(double)" value="{{{g('primary_damping_x')}, {g('primary_damping_y')}, {g('primary_damping_z')}, 0, 0, 0}}"/>
-    </ParameterList>
-    <ParameterList name="air spring">
-      <Parameter name="Blocks" type="Array(string)" value="{{secondary}}"/>
-      <Parameter name="Element" type="string" value="spring-damper"/>
-      <Parameter name="Stiffness" type="Array(double)" value="{{{g('secondary_stiffness_x')}, {g('secondary_stiffness_y')}, {g('secondary_stiffness_z')}, 0, 0, 0}}"/>
-      <Parameter name="Damping" type="Array(double)" value="{{{g('secondary_damping_x')}, {g('secondary_damping_y')}, {g('secondary_damping_z')}, 0, 0, 0}}"/>
-    </ParameterList>
-    <ParameterList name="yaw dampers">
-      <Parameter name="Blocks" type="Array(string)" value="{{secondary_rotation}}"/>
-      <Parameter name="Element" type="string" value="spring-damper"/>
-      <Parameter name="Stiffness" type="Array(double)" value="{{0, 0, 0, 0, 0, 0}}"/>
-      <Parameter name="Damping" type="Array(double)" value="{{0, 0, 0, 0, 0, {YAW_DAMPING:g}}}"/>
-    </ParameterList>
-  </ParameterList>
-"""
 
 
 TRACK = """      <ParameterList name="Profiles">
@@ -144,7 +91,7 @@ def deck(shape, span, p):
 -->
 <ParameterList name="railfe">
   <Parameter name="Title" type="string" value="Lateral train-structure interaction: {short} {span:g} m at 300 km/h"/>
-{vehicle_xml(p)}  <ParameterList name="Steps">
+{vehicle_modes_fit.vehicle_deck_xml(p, yaw_damping=YAW_DAMPING)}  <ParameterList name="Steps">
 {step_xml("online", shape, span, start, True)}  </ParameterList>
 </ParameterList>
 """

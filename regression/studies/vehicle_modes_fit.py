@@ -313,6 +313,62 @@ def write_csv(p, path=CSV_PATH):
         w.writerows(rows)
 
 
+def vehicle_deck_xml(p, wheel_radius=WHEEL_RADIUS, yaw_damping=0.0):
+    """The Mesh (Mesh/Type vehicle) and Sections of a railfe deck for parameters \p p, the
+    wheelset centres at \p wheel_radius (the track's nominal rolling radius), with a yaw damper
+    of \p yaw_damping N m s/rad between the car body and each bogie when it is positive."""
+    def g(k):
+        return "%.6g" % p[k]
+
+    def point_mass(name, block, prefix):
+        return f"""    <ParameterList name="{name}">
+      <Parameter name="Blocks" type="Array(string)" value="{{{block}}}"/>
+      <Parameter name="Element" type="string" value="point mass"/>
+      <Parameter name="Mass" type="double" value="{g(prefix + '_mass')}"/>
+      <Parameter name="Inertia" type="Array(double)" value="{{{g(prefix + '_inertia_x')}, {g(prefix + '_inertia_y')}, {g(prefix + '_inertia_z')}}}"/>
+    </ParameterList>
+"""
+
+    def spring(name, block, prefix):
+        k = ", ".join(g(prefix + "_stiffness_" + c) for c in "xyz")
+        c = ", ".join(g(prefix + "_damping_" + c) for c in "xyz")
+        return f"""    <ParameterList name="{name}">
+      <Parameter name="Blocks" type="Array(string)" value="{{{block}}}"/>
+      <Parameter name="Element" type="string" value="spring-damper"/>
+      <Parameter name="Stiffness" type="Array(double)" value="{{{k}, 0, 0, 0}}"/>
+      <Parameter name="Damping" type="Array(double)" value="{{{c}, 0, 0, 0}}"/>
+    </ParameterList>
+"""
+
+    dampers = ""
+    if yaw_damping > 0:
+        dampers = f"""    <ParameterList name="yaw dampers">
+      <Parameter name="Blocks" type="Array(string)" value="{{secondary_rotation}}"/>
+      <Parameter name="Element" type="string" value="spring-damper"/>
+      <Parameter name="Stiffness" type="Array(double)" value="{{0, 0, 0, 0, 0, 0}}"/>
+      <Parameter name="Damping" type="Array(double)" value="{{0, 0, 0, 0, 0, {yaw_damping:g}}}"/>
+    </ParameterList>
+"""
+    rotation = "true" if yaw_damping > 0 else "false"
+    return f"""  <ParameterList name="Mesh">
+    <Parameter name="Type" type="string" value="vehicle"/>
+    <ParameterList name="Vehicle">
+      <Parameter name="Half bogie spacing" type="double" value="{g('half_bogie_spacing')}"/>
+      <Parameter name="Half wheelbase" type="double" value="{g('half_wheelbase')}"/>
+      <Parameter name="Wheel radius" type="double" value="{wheel_radius:g}"/>
+      <Parameter name="Car body height" type="double" value="{g('car_body_cg_height')}"/>
+      <Parameter name="Bogie height" type="double" value="{g('bogie_cg_height')}"/>
+      <Parameter name="Primary half span" type="double" value="{g('primary_half_span')}"/>
+      <Parameter name="Secondary half span" type="double" value="{g('secondary_half_span')}"/>
+      <Parameter name="Secondary height" type="double" value="{g('secondary_height')}"/>
+      <Parameter name="Secondary rotation" type="bool" value="{rotation}"/>
+    </ParameterList>
+  </ParameterList>
+  <ParameterList name="Sections">
+{point_mass("car body", "car_body", "car_body")}{point_mass("bogie", "bogies", "bogie")}{point_mass("wheelset", "wheelsets", "wheelset")}{spring("axle box", "primary", "primary")}{spring("air spring", "secondary", "secondary")}{dampers}  </ParameterList>
+"""
+
+
 def main(argv):
     mode = argv[1] if len(argv) > 1 else "fit"
     if mode == "check":
