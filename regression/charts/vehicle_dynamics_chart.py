@@ -6,7 +6,10 @@ acceleration, and the lateral forces Y on its right and left wheels with each fl
 marked at its peak.
 
 Usage: vehicle_dynamics_chart.py WHEELSETS.csv WHEELS.csv POINTS.csv IMPACTS.csv DEVIATION.csv
-       SPEED START X1 OUT.png   (DEVIATION.csv may be '-': none; X1 is the first wheelset's x)
+       SPEED START X1 OUT.png [LABEL REFERENCE_PREFIX REFERENCE_LABEL]
+(DEVIATION.csv may be '-': none; X1 is the first wheelset's x.) With a reference, that step's
+<prefix>_wheelsets.csv, _wheels.csv and _points.csv are drawn dashed on the same axes, for the
+comparison of two models of one run.
 """
 import csv
 import sys
@@ -27,8 +30,13 @@ def columns(path):
 
 def main():
     wheelsets, wheels, points, impacts, deviation, speed, start, x1, out = sys.argv[1:10]
+    label, reference, reference_label = (sys.argv[10:13] + ["", "", ""])[:3]
     speed, start, x1 = float(speed), float(start), float(x1)
     w, c, p = columns(wheelsets), columns(wheels), columns(points)
+    refs = None
+    if reference:
+        refs = (columns(reference + "_wheelsets.csv"), columns(reference + "_wheels.csv"),
+                columns(reference + "_points.csv"))
     impact_rows = list(csv.DictReader(open(impacts)))
     fig, axes = plt.subplots(4, 1, figsize=(8, 10), sharex=True)
     t = w["time_s"]
@@ -39,19 +47,29 @@ def main():
         axes[0].plot(times, [1e3 * v for v in d["rail_m"]], "k", label="rail (on its pads)")
         axes[0].set_xlim(t[0], t[-1])
     acceleration = [k for k in p if k.endswith("_ay_m_per_s2")]
+    tag = (label + ": ") if label else ""
     if acceleration:
         axes[1].plot(p["time_s"], p[acceleration[0]], "C3",
-                     label=acceleration[0].replace("_ay_m_per_s2", ""))
+                     label=tag + acceleration[0].replace("_ay_m_per_s2", ""))
+        if refs and acceleration[0] in refs[2]:
+            axes[1].plot(refs[2]["time_s"], refs[2][acceleration[0]], "k--", lw=0.9,
+                         label=reference_label)
     axes[0].set_ylabel("lateral deviation\nunder wheelset 1 (mm)")
     axes[1].set_ylabel("car body lateral\nacceleration (m/s²)")
-    axes[2].plot(t, [1e3 * y for y in w["w1_y_m"]], "C0", label="displacement (mm)")
+    axes[2].plot(t, [1e3 * y for y in w["w1_y_m"]], "C0", label=tag + "displacement (mm)")
+    if refs:
+        axes[2].plot(refs[0]["time_s"], [1e3 * y for y in refs[0]["w1_y_m"]], "k--", lw=0.9,
+                     label=reference_label)
     ax2 = axes[2].twinx()
     ax2.plot(t, w["w1_ay_m_per_s2"], "C1", lw=0.7, label="acceleration (m/s²)")
     ax2.set_ylabel("acceleration (m/s²)", color="C1")
     axes[2].set_ylabel("wheelset 1 lateral\ndisplacement (mm)")
     for side, colour in (("right", "C0"), ("left", "C1")):
         axes[3].plot(c["time_s"], [y / 1e3 for y in c["w1_" + side + "_Y_N"]], colour,
-                     label=side + " wheel")
+                     label=tag + side + " wheel")
+        if refs:
+            axes[3].plot(refs[1]["time_s"], [y / 1e3 for y in refs[1]["w1_" + side + "_Y_N"]],
+                         "--", color=colour, lw=0.9, label=reference_label + ": " + side)
         peaks = [(float(r["start_s"]), float(r["peak_Y_N"]) / 1e3) for r in impact_rows
                  if r["wheelset"] == "1" and r["wheel"] == side]
         if peaks:
