@@ -175,6 +175,22 @@ CreepForces WheelRailContact::creep_forces(const HertzContact& hertz, const Cree
   return {};
 }
 
+bool WheelRailContact::uses_offline_table(const WheelsetPose& pose) const {
+  if (settings_.offline_table && !table_)
+    throw std::logic_error("WheelRailContact: the offline-table model needs use_table()");
+  // Beyond the table's shifts (a wheel climbing its flange past every rigid pose of the pair)
+  // the point stays the table's last: continuous at the table's end, where a switch to the
+  // online search would jump (TS 20 m: Newton stalled there at 0.978 s), and near the truth on
+  // a steep flange, whose contact point hardly moves on the wheel until the flange's tip.
+  (void)pose;
+  return settings_.offline_table;
+}
+
+ContactPoint WheelRailContact::offline_point(const WheelsetPose& pose) const {
+  const auto start = table_->start(side_, flange_, pose.lateral);
+  return contact_at(*geometry_, side_, flange_, pose, start[0], start[1]);
+}
+
 ContactState WheelRailContact::evaluate(const ContactKinematics& state) {
   const WheelsetPose pose = relative_pose(state);
   if (table_ && flange_) {
@@ -190,15 +206,9 @@ ContactState WheelRailContact::evaluate(const ContactKinematics& state) {
       return forces_at(state, point, nullptr);
     }
   }
-  if (settings_.offline_table && !table_)
-    throw std::logic_error("WheelRailContact: the offline-table model needs use_table()");
-  // Beyond the table's shifts (a wheel climbing its flange past every rigid pose of the pair)
-  // the offline model has no point: there it searches, as the online model does.
-  if (settings_.offline_table && table_->covers(pose.lateral)) {
+  if (uses_offline_table(pose)) {
     ++offline_points_;
-    const auto start = table_->start(side_, flange_, pose.lateral);
-    return forces_at(state, contact_at(*geometry_, side_, flange_, pose, start[0], start[1]),
-                     nullptr);
+    return forces_at(state, offline_point(pose), nullptr);
   }
   if (!started_) {
     const GapSample sample = least_gap_sample(*geometry_, side_, flange_, pose, 200, search_);
@@ -356,11 +366,14 @@ void WheelRailContact::tangent(const ContactKinematics& state, const ContactStat
       else
         (j < 6 ? moved.wheelset_v[j] : moved.node_v[j - 6]) += step;
       ContactPoint point = at.point;
-      if (pass == 0) {
+      const WheelsetPose moved_pose = relative_pose(moved);
+      if (pass == 0 && uses_offline_table(moved_pose)) {
+        // The derivative of the offline model is that of its own point, not of a search.
+        point = offline_point(moved_pose);
+      } else if (pass == 0) {
         // A moved position needs its own contact point, searched from the one at the base.
         const double s_wheel = at.point.s_wheel, s_rail = at.point.s_rail;
-        point = search_contact(*geometry_, side_, flange_, relative_pose(moved), s_wheel, s_rail,
-                               search_);
+        point = search_contact(*geometry_, side_, flange_, moved_pose, s_wheel, s_rail, search_);
         // The derivative is that of this contact: a search that fails or lands on another
         // minimum (a step of 1e-8 cannot move the point by 0.1 mm) keeps the base point.
         if (point.status != SearchStatus::converged || std::abs(point.s_wheel - s_wheel) > 1e-4)

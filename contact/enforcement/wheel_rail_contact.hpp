@@ -59,7 +59,7 @@ struct WheelRailContactSettings {
   bool trust_region = true;  ///< the contact search's trust region (false: plain Newton)
   /// The contact points from the lookup table at the wheelset's lateral shift, not searched
   /// (the gap, normal and curvatures taken there): the offline-table model of programs such as
-  /// DIASTARS. Needs use_table(); beyond the table's shifts the points are searched.
+  /// DIASTARS. Needs use_table(); beyond the table's shifts its last row's points.
   bool offline_table = false;
   /// The creep forces' share of the tangent damping: false, forward differences of the theory
   /// (consistent); true, Kalker's linear damping matrix Jᵀ D J at the current ellipse, as the
@@ -127,7 +127,7 @@ class WheelRailContact {
   /// (not searched).
   std::size_t far_flanges() const { return far_flanges_; }
   /// Evaluations that took their point from the offline table (WheelRailContactSettings::
-  /// offline_table); the others were beyond the table's shifts and searched.
+  /// offline_table).
   std::size_t offline_points() const { return offline_points_; }
   /// A flange whose rigid-contact gap exceeds this is not searched (m).
   static constexpr double kFarFlangeGap = 2e-3;
@@ -139,6 +139,10 @@ class WheelRailContact {
   bool flange() const { return flange_; }
 
  private:
+  // Whether the offline-table model gives the point at \p pose (settings and table's range).
+  bool uses_offline_table(const WheelsetPose& pose) const;
+  // The offline model's point at \p pose: the table's wheel point, the gap taken there.
+  ContactPoint offline_point(const WheelsetPose& pose) const;
   /// Pose of the wheelset relative to the node's rail displacement.
   WheelsetPose relative_pose(const ContactKinematics& state) const;
   /// The forces of \p state with the contact point \p point already searched; Hertz's ellipse

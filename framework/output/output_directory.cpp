@@ -55,6 +55,12 @@ std::string OutputDirectory::staging_path(const std::string& name) {
   return (fs::path(path_) / (name + ".part")).string();
 }
 
+std::string OutputDirectory::staged_path_of(const std::string& name) const {
+  if (std::find(names_.begin(), names_.end(), name) == names_.end())
+    throw RunError("no step of this run has written '" + name + "'");
+  return (fs::path(path_) / (name + ".part")).string();
+}
+
 std::string OutputDirectory::final_path(const std::string& name) const {
   return (fs::path(path_) / name).string();
 }

@@ -28,6 +28,9 @@ class OutputDirectory {
   /// again from the same step returns the same path; a file registered by another step is a
   /// RunError naming both steps (one step's results never overwrite another's).
   std::string staging_path(const std::string& name);
+  /// Where an earlier step staged \p name, to read it during the run (a chart comparing two
+  /// steps); registers nothing. Throws RunError when no step has registered \p name.
+  std::string staged_path_of(const std::string& name) const;
   /// Final path of \p name (valid after finalize()).
   std::string final_path(const std::string& name) const;
   /// Checks that no registered file holds NaN or inf (a RunError naming the file and where, on

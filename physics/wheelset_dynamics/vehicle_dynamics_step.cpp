@@ -281,13 +281,17 @@ void VehicleDynamicsStep::run(StepContext& context) {
     const auto path = [&](const char* name) {
       return context.output.staging_path(context.step_name + name);
     };
-    draw_chart(context, section, "vehicle_dynamics_chart.py",
-               {path("_wheelsets.csv"), path("_wheels.csv"), path("_points.csv"),
-                path("_flange_impacts.csv"),
-                deviation_settings(p).shape != DeviationShape::none ? path("_deviation.csv") : "-",
-                CsvWriter::format(V), CsvWriter::format(start),
-                CsvWriter::format(railed[0].position), path("_chart.png"), context.step_name,
-                reference.empty() ? "" : context.output.staging_path(reference), reference});
+    const auto reference_file = [&](const char* name) {
+      return reference.empty() ? std::string() : context.output.staged_path_of(reference + name);
+    };
+    draw_chart(
+        context, section, "vehicle_dynamics_chart.py",
+        {path("_wheelsets.csv"), path("_wheels.csv"), path("_points.csv"),
+         path("_flange_impacts.csv"),
+         deviation_settings(p).shape != DeviationShape::none ? path("_deviation.csv") : "-",
+         CsvWriter::format(V), CsvWriter::format(start), CsvWriter::format(railed[0].position),
+         path("_chart.png"), context.step_name, reference_file("_wheelsets.csv"),
+         reference_file("_wheels.csv"), reference_file("_points.csv"), reference});
   }
 
   const NewtonStatistics& statistics = solver.statistics();
@@ -300,7 +304,7 @@ void VehicleDynamicsStep::run(StepContext& context) {
   context.summary.add(section, "contact points taken from the lookup table (jumps)",
                       static_cast<double>(jumps));
   if (contact_settings(p).offline_table)
-    context.summary.add(section, "contact points from the offline table (the rest searched)",
+    context.summary.add(section, "contact points from the offline table",
                         static_cast<double>(offline));
   context.summary.add(section, "wheelsets", static_cast<double>(n_wheelsets));
   context.summary.add(section, "unknowns (vehicle, internal nodes)", static_cast<double>(n));

@@ -6,10 +6,9 @@ acceleration, and the lateral forces Y on its right and left wheels with each fl
 marked at its peak.
 
 Usage: vehicle_dynamics_chart.py WHEELSETS.csv WHEELS.csv POINTS.csv IMPACTS.csv DEVIATION.csv
-       SPEED START X1 OUT.png [LABEL REFERENCE_PREFIX REFERENCE_LABEL]
+       SPEED START X1 OUT.png [LABEL REF_WHEELSETS.csv REF_WHEELS.csv REF_POINTS.csv REF_LABEL]
 (DEVIATION.csv may be '-': none; X1 is the first wheelset's x.) With a reference, that step's
-<prefix>_wheelsets.csv, _wheels.csv and _points.csv are drawn dashed on the same axes, for the
-comparison of two models of one run.
+histories are drawn dashed on the same axes, for the comparison of two models of one run.
 """
 import csv
 import sys
@@ -30,13 +29,13 @@ def columns(path):
 
 def main():
     wheelsets, wheels, points, impacts, deviation, speed, start, x1, out = sys.argv[1:10]
-    label, reference, reference_label = (sys.argv[10:13] + ["", "", ""])[:3]
+    label, ref_wheelsets, ref_wheels, ref_points, reference_label = (sys.argv[10:15] +
+                                                                     [""] * 5)[:5]
     speed, start, x1 = float(speed), float(start), float(x1)
     w, c, p = columns(wheelsets), columns(wheels), columns(points)
     refs = None
-    if reference:
-        refs = (columns(reference + "_wheelsets.csv"), columns(reference + "_wheels.csv"),
-                columns(reference + "_points.csv"))
+    if ref_wheelsets:
+        refs = (columns(ref_wheelsets), columns(ref_wheels), columns(ref_points))
     impact_rows = list(csv.DictReader(open(impacts)))
     fig, axes = plt.subplots(4, 1, figsize=(8, 10), sharex=True)
     t = w["time_s"]

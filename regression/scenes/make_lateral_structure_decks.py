@@ -4,8 +4,9 @@ inputs/scenes/lateral_structure_{bs,ts}{20,40}.xml. Each runs the test car of
 docs/vehicle_parameters.md (regression/studies/vehicle_parameters.csv, calibrated to the nine
 published modes, with the yaw dampers of regression/studies/vehicle_critical_speed.py) at
 300 km/h over a structure deviation (bending or translation shape, 20 or 40 m spans, 8 mm), as
-published: dt 1 ms, 2500 steps, alpha 0, static balance first, with railfe's online contact
-search and creep-force table.
+published: dt 1 ms, 2500 steps, alpha 0, static balance first; twice, with railfe's online
+contact search and creep-force table, then with the offline contact table and Kalker's linear
+theory saturated (the DIASTARS approach), charted on the same axes.
 
 Run from the repository root: /usr/bin/python3 regression/scenes/make_lateral_structure_decks.py
 """
@@ -81,18 +82,18 @@ def deck(shape, span, p):
   their pads (transitions of about 3 m at the span ends). The first wheelset reaches the
   structure at t = {REACH:g} s. As published: dt 1 ms, 2500 steps, HHT alpha 0, static balance
   first; rigid structure (the roller rig of the test plant).
-  Step 'online': railfe's model (online contact search, creep-force table). The DIASTARS
-  approach (Contact/Geometry = offline table) is not in these decks yet: taking the gap at the
-  table's wheel point stalls Newton on all four cases (docs/verification.md#vehicle).
+  Step 'online': railfe's model (online contact search, creep-force table). Step 'offline': the
+  DIASTARS approach (offline contact table, Kalker's linear theory saturated by
+  Shen-Hedrick-Elkins), charted against 'online'.
   Written by regression/scenes/make_lateral_structure_decks.py.
-  Run: railfe {os.path.basename(name_of(shape, span))}   (about 2 s)
-  Look at: online_chart.png, online_flange_impacts.csv, online_safety.csv, online_comfort.csv,
-  summary.txt
+  Run: railfe {os.path.basename(name_of(shape, span))}   (about 4 s)
+  Look at: online_chart.png, offline_chart.png (both models), *_flange_impacts.csv,
+  *_safety.csv, *_comfort.csv, summary.txt
 -->
 <ParameterList name="railfe">
   <Parameter name="Title" type="string" value="Lateral train-structure interaction: {short} {span:g} m at 300 km/h"/>
 {vehicle_modes_fit.vehicle_deck_xml(p, yaw_damping=YAW_DAMPING)}  <ParameterList name="Steps">
-{step_xml("online", shape, span, start, True)}  </ParameterList>
+{step_xml("online", shape, span, start, True)}{step_xml("offline", shape, span, start, False, "online")}  </ParameterList>
 </ParameterList>
 """
 
