@@ -15,7 +15,12 @@
            docs/data/lateral_structure_steps.csv and docs/img/lateral_structure_steps.png.
 
 Run from the repository root: /usr/bin/python3 regression/studies/lateral_structure_studies.py
-{models|steps|all} [build/bin/railfe]
+{models|steps|sweep|all} [build/bin/railfe]
+
+  sweep    BS 20 m (online model) at 200-350 km/h and amplitudes of 8-32 mm: peak Y/Q, wheel
+           unloading and car-body acceleration, or where the run stopped (Newton failed, a
+           wheelset left the rails). Writes docs/data/lateral_structure_sweep.csv and
+           docs/img/lateral_structure_sweep.png.
 """
 import csv
 import json
@@ -164,6 +169,63 @@ def steps(railfe, work):
         print(", ".join("%.5g" % v for v in r))
 
 
+def sweep(railfe, work):
+    """BS 20 m (online model) over amplitudes and speeds: peak Y/Q and wheel unloading, or where
+    the run stopped (Newton failed, or a wheelset left the rails)."""
+    text = deck_text("bs20")
+    online = text[:text.index('    <ParameterList name="offline">')] + "  </ParameterList>\n</ParameterList>\n"
+    rows = []
+    for kmh in (200, 250, 300, 350):
+        for mm in (8, 12, 16, 20, 24, 32):
+            deck = online.replace('<Parameter name="Amplitude" type="double" value="0.008"/>',
+                                  '<Parameter name="Amplitude" type="double" value="%g"/>' % (mm / 1e3))
+            deck = deck.replace('<Parameter name="Speed" type="double" value="83.33333333"/>',
+                                '<Parameter name="Speed" type="double" value="%.8g"/>' % (kmh / 3.6))
+            name = "v%d_a%d" % (kmh, mm)
+            out = run(railfe, deck, work, name, check=False)
+            if out is None:
+                failure = open(os.path.join(work, name, "FAILED.txt")).read()
+                at = failure.split("from t = ")[1].split(" s")[0] if "from t = " in failure else "?"
+                rows.append([kmh, mm, "", "", "", "Newton failed at t = %s s" % at])
+                continue
+            s = section(out, "online")
+            left = [k for k in s if k.endswith("left the rails at [s]")]
+            outcome = ("%s at %.3f s" % (left[0].replace(" [s]", ""), s[left[0]]) if left
+                       else "ran 2.5 s")
+            rows.append([kmh, mm, "%.4g" % s["peak derailment quotient Y/Q"],
+                         "%.4g" % s["peak wheel unloading dQ/Q"],
+                         "%.4g" % s["peak lateral acceleration at floor_above_rear_bogie [m/s^2]"],
+                         outcome])
+            print(rows[-1])
+    path = os.path.join(ROOT, "docs", "data", "lateral_structure_sweep.csv")
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["speed_km_per_h", "amplitude_mm", "peak_Y_over_Q", "peak_unloading_dQ_over_Q",
+                    "peak_car_body_ay_m_per_s2", "outcome"])
+        w.writerows(rows)
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    for k, kmh in enumerate((200, 250, 300, 350)):
+        ok = [r for r in rows if r[0] == kmh and r[2] != ""]
+        bad = [r for r in rows if r[0] == kmh and (r[2] == "" or "left" in r[5])]
+        for ax, col in ((axes[0], 2), (axes[1], 3)):
+            ax.plot([r[1] for r in ok], [float(r[col]) for r in ok], "o-", color="C%d" % k,
+                    label="%d km/h" % kmh)
+            for r in bad:
+                ax.plot(r[1], 0, "x", color="C%d" % k, ms=10, mew=2)
+    axes[0].axhline(0.8, color="k", ls=":", lw=0.8)
+    axes[0].set_ylabel("peak derailment quotient Y/Q")
+    axes[1].set_ylabel("peak wheel unloading ΔQ/Q")
+    for ax in axes:
+        ax.set_xlabel("structure deviation amplitude (mm)")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
+    fig.suptitle("BS 20 m, online model: safety indices against amplitude and speed "
+                 "(x on the axis: the run stopped, Newton failed or a wheelset left the rails)",
+                 fontsize=9)
+    fig.tight_layout()
+    fig.savefig(os.path.join(ROOT, "docs", "img", "lateral_structure_sweep.png"), dpi=110)
+
+
 def main():
     what = sys.argv[1] if len(sys.argv) > 1 else "all"
     railfe = sys.argv[2] if len(sys.argv) > 2 else os.path.join(ROOT, "build", "bin", "railfe")
@@ -172,6 +234,8 @@ def main():
             models(railfe, work)
         if what in ("steps", "all"):
             steps(railfe, work)
+        if what in ("sweep", "all"):
+            sweep(railfe, work)
 
 
 if __name__ == "__main__":
