@@ -15,7 +15,12 @@
            docs/data/lateral_structure_steps.csv and docs/img/lateral_structure_steps.png.
 
 Run from the repository root: /usr/bin/python3 regression/studies/lateral_structure_studies.py
-{models|steps|sweep|all} [build/bin/railfe]
+{models|steps|theories|sweep|all} [build/bin/railfe]
+
+  theories BS 20 m at dt 1 ms with each creep theory (online search) and the offline-table model,
+           against the table model at dt 0.25 ms: errors in peak lateral force and car-body
+           acceleration against wall time. Writes docs/data/lateral_structure_theories.csv and
+           docs/img/lateral_structure_theories.png.
 
   sweep    BS 20 m (online model) at 200-350 km/h and amplitudes of 8-32 mm: peak Y/Q, wheel
            unloading and car-body acceleration, or where the run stopped (Newton failed, a
@@ -169,6 +174,69 @@ def steps(railfe, work):
         print(", ".join("%.5g" % v for v in r))
 
 
+def theories(railfe, work):
+    """BS 20 m at dt 1 ms: each creep theory with the online search, and the offline-table model,
+    against the reference (online search, creep-force table, dt 0.25 ms): error in the peak
+    lateral wheel force and the car body's peak lateral acceleration against wall time."""
+    text = deck_text("bs20")
+    online = text[:text.index('    <ParameterList name="offline">')] + "  </ParameterList>\n</ParameterList>\n"
+    table_line = '<Parameter name="Table half range" type="double" value="0.0073"/>'
+
+    def variant(theory, geometry="online search", dt=0.001):
+        deck = online.replace(table_line, table_line +
+                              '<Parameter name="Creep theory" type="string" value="%s"/>'
+                              '<Parameter name="Geometry" type="string" value="%s"/>' % (
+                                  theory, geometry))
+        return deck.replace('<Parameter name="Time step" type="double" value="0.001"/>',
+                            '<Parameter name="Time step" type="double" value="%g"/>' % dt)
+
+    def measures(out):
+        s = section(out, "online")
+        return (s["peak lateral wheel force [N]"] / 1e3,
+                s["peak lateral acceleration at floor_above_rear_bogie [m/s^2]"],
+                s["wall time of the time steps (with their output) [s]"])
+
+    ref = measures(run(railfe, variant("table", dt=0.00025), work, "reference"))
+    cases = [("table", "online search"), ("linear", "online search"),
+             ("shen-hedrick-elkins", "online search"), ("polach", "online search"),
+             ("fastsim", "online search"), ("shen-hedrick-elkins", "offline table")]
+    rows = []
+    for theory, geometry in cases:
+        name = (theory + "_" + geometry).replace(" ", "_")
+        out = run(railfe, variant(theory, geometry), work, name, check=False)
+        if out is None:
+            rows.append([theory, geometry, "", "", "", "failed"])
+            continue
+        force, ay, wall = measures(out)
+        rows.append([theory, geometry, "%.3f" % (100 * (force - ref[0]) / ref[0]),
+                     "%.3f" % (100 * (ay - ref[1]) / ref[1]), "%.4f" % wall, "ran"])
+        print(rows[-1])
+    path = os.path.join(ROOT, "docs", "data", "lateral_structure_theories.csv")
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["creep_theory", "geometry", "peak_lateral_force_error_percent",
+                    "peak_car_body_ay_error_percent", "wall_time_of_time_steps_s", "outcome"])
+        w.writerow(["table", "online search (reference, dt 0.25 ms)", "0", "0",
+                    "%.4f" % ref[2], "ran"])
+        w.writerows(rows)
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    for k, r in enumerate(r for r in rows if r[5] == "ran"):
+        label = r[0] + (" (offline table)" if r[1] == "offline table" else "")
+        for ax, col in ((axes[0], 2), (axes[1], 3)):
+            ax.plot(float(r[4]), abs(float(r[col])), "o", color="C%d" % k, label=label)
+    axes[0].set_ylabel("|error| in peak lateral wheel force (%)")
+    axes[1].set_ylabel("|error| in peak car-body lateral acceleration (%)")
+    for ax in axes:
+        ax.set_xlabel("wall time of the 2.5 s run (s, one core, dt 1 ms)")
+        ax.set_yscale("log")
+        ax.grid(alpha=0.3, which="both")
+        ax.legend(fontsize=7)
+    fig.suptitle("BS 20 m at 300 km/h: creep theories and contact models against the table "
+                 "model at dt 0.25 ms", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(os.path.join(ROOT, "docs", "img", "lateral_structure_theories.png"), dpi=110)
+
+
 def sweep(railfe, work):
     """BS 20 m (online model) over amplitudes and speeds: peak Y/Q and wheel unloading, or where
     the run stopped (Newton failed, or a wheelset left the rails)."""
@@ -234,6 +302,8 @@ def main():
             models(railfe, work)
         if what in ("steps", "all"):
             steps(railfe, work)
+        if what in ("theories", "all"):
+            theories(railfe, work)
         if what in ("sweep", "all"):
             sweep(railfe, work)
 
