@@ -1,6 +1,7 @@
 #include "physics/wheelset_dynamics/vehicle_dynamics_module.hpp"
 
 #include "physics/common/profile_geometry.hpp"
+#include "physics/wheelset_dynamics/time_stepping.hpp"
 #include "physics/wheelset_dynamics/vehicle_dynamics_step.hpp"
 #include "physics/wheelset_dynamics/wheelset_contact_deck.hpp"
 
@@ -52,37 +53,20 @@ ParameterSpec vehicle_dynamics_parameters() {
   spec.text_array("Measuring points", {},
                   "Node sets whose nodes' displacements and accelerations (lateral, vertical) go "
                   "to <step>_points.csv, e.g. {floor_above_rear_bogie}.");
-  spec.required_real("Speed", "Forward speed (creepages divide by it).", "m/s", Range::positive());
   spec.real("Start", 0,
             "Track position s of the mesh's x = 0 at t = 0 (a wheelset at x runs over the "
             "irregularities at s = Start + x + Speed t).",
             "m");
-  spec.required_real("End time", "Simulated duration.", "s", Range::positive());
-  spec.required_real("Time step", "Δt.", "s", Range::positive());
-  spec.real("Alpha", -0.05,
-            "HHT alpha in [-1/3, 0] (beta = (1-alpha)^2/4, gamma = (1-2 alpha)/2). 0 is the "
-            "average-acceleration rule of the published runs (no numerical damping), but it "
-            "leaves the contacts' internal nodes free to ring at the step's Nyquist frequency: "
-            "on 1:40 cones at 52.8 m/s and 1 ms the wheelsets' lateral acceleration alternated "
-            "in sign step to step, Newton needed 3, then 11 iterations and failed after 1.5 s; "
-            "-0.05 damps it (2.1 iterations) and 0 with 0.5 ms steps also runs "
-            "(docs/verification.md#vehicle).",
-            "", Range::closed(-1.0 / 3.0, 0));
-  spec.integer("Newton iterations", 25, "Corrections allowed per step.", Range::at_least(1));
-  spec.real("Newton tolerance", 1e-6,
-            "Converged when the residual is below this fraction of the step's force scale and the "
-            "last correction below this fraction of the step's displacement.",
-            "", Range::closed(1e-12, 1e-3));
-  spec.flag("Line search", true,
-            "Halve a Newton correction that raises the residual; false: plain Newton.");
-  spec.choice("Newton tangent", "every iteration",
-              {{"every iteration",
-                "full Newton: the tangent and its factorization anew at every "
-                "iteration"},
-               {"once per step",
-                "modified Newton: the first iteration's matrix for the whole "
-                "step (cheaper iterations, usually more of them)"}},
-              "How often Newton's matrix is formed.");
+  add_time_stepping_parameters(
+      spec,
+      "HHT alpha in [-1/3, 0] (beta = (1-alpha)^2/4, gamma = (1-2 alpha)/2). 0 is the "
+      "average-acceleration rule of the published runs (no numerical damping), but it "
+      "leaves the contacts' internal nodes free to ring at the step's Nyquist frequency: "
+      "on 1:40 cones at 52.8 m/s and 1 ms the wheelsets' lateral acceleration alternated "
+      "in sign step to step, Newton needed 3, then 11 iterations and failed after 1.5 s; "
+      "-0.05 damps it (2.1 iterations) and 0 with 0.5 ms steps also runs "
+      "(docs/verification.md#vehicle).",
+      true);
   spec.real("Gravity", 9.81, "g, along +z (down).", "m/s^2", Range::non_negative());
   spec.text("Lateral irregularity", "",
             "Lateral offset of both rails (right positive) as a function of the track position s "

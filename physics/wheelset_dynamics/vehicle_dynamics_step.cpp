@@ -17,6 +17,7 @@
 #include "physics/common/chart_script.hpp"
 #include "physics/common/profile_geometry.hpp"
 #include "physics/common/structure_deviation.hpp"
+#include "physics/wheelset_dynamics/time_stepping.hpp"
 #include "physics/wheelset_dynamics/vehicle_balance.hpp"
 #include "physics/wheelset_dynamics/vehicle_recorder.hpp"
 #include "physics/wheelset_dynamics/wheelset_contact_deck.hpp"
@@ -204,11 +205,7 @@ void VehicleDynamicsStep::run(StepContext& context) {
     system.wheelset(w).set_spin(-V / radius);
     system.wheelset(w).set_rolling(true);
   }
-  NewtonSettings newton;
-  newton.max_iterations = p.get<int>("Newton iterations");
-  newton.line_search = p.get<bool>("Line search");
-  newton.tangent_once_per_step = p.get<std::string>("Newton tangent") == "once per step";
-  newton.residual_relative = newton.increment_relative = p.get<double>("Newton tolerance");
+  const NewtonSettings newton = newton_settings(p);
   PrescribedSaddlePointSolver saddle(system);
   NewtonStepSolver solver(system, newton);
   solver.constrain(&rails, &saddle);
@@ -235,15 +232,7 @@ void VehicleDynamicsStep::run(StepContext& context) {
   const auto stepping_start = std::chrono::steady_clock::now();
   double time = 0;
   for (long step = 0; step < n_steps; ++step) {
-    try {
-      integrator.step(time, dt, solver, u.data(), v.data(), a.data());
-    } catch (const StepNotConverged& error) {
-      std::ostringstream message;
-      message << context.path << ": Newton did not converge in the step from t = " << error.time
-              << " s (Δt " << error.step << " s): " << error.what()
-              << "; the run stops here rather than go on with an unbalanced state";
-      throw RunError(message.str());
-    }
+    step_or_stop(integrator, time, dt, solver, u.data(), v.data(), a.data(), context.path);
     time = (step + 1) * dt;
     evaluate_states();
     // A wheelset with no wheel touching for 50 ms has left the rails (a climb or a jump over):

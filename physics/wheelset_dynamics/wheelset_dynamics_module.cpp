@@ -1,6 +1,7 @@
 #include "physics/wheelset_dynamics/wheelset_dynamics_module.hpp"
 
 #include "physics/common/profile_geometry.hpp"
+#include "physics/wheelset_dynamics/time_stepping.hpp"
 #include "physics/wheelset_dynamics/wheelset_contact_deck.hpp"
 #include "physics/wheelset_dynamics/wheelset_dynamics_step.hpp"
 #include "physics/wheelset_dynamics/wheelset_track.hpp"
@@ -54,26 +55,14 @@ ParameterSpec wheelset_dynamics_parameters() {
   spec.sublist("Suspension", suspension_parameters(), "Primary suspension.");
   spec.sublist("Contact", contact_parameters(), "The contact element.");
   spec.sublist("Rails", track_rail_parameters(), "Rigid rails, or a beam per rail on rail seats.");
-  spec.required_real("Speed", "Forward speed (creepages divide by it).", "m/s", Range::positive());
   spec.real("Start", 0, "Position along the track at t = 0 (the irregularities' s).", "m");
-  spec.required_real("End time", "Simulated duration.", "s", Range::positive());
-  spec.required_real("Time step", "Δt.", "s", Range::positive());
-  spec.real("Alpha", -0.05,
-            "HHT alpha in [-1/3, 0] (beta = (1-alpha)^2/4, gamma = (1-2 alpha)/2). The default "
-            "damps the internal nodes' and the Hertz springs' highest modes, which the rails' "
-            "irregularities drive step to step; 0 (the average-acceleration rule, no numerical "
-            "damping) can leave Newton stalled there (docs/theory.md).",
-            "", Range::closed(-1.0 / 3.0, 0));
-  spec.integer("Newton iterations", 25, "Corrections allowed per step.", Range::at_least(1));
-  spec.real("Newton tolerance", 1e-6,
-            "Converged when the residual is below this fraction of the step's force scale and the "
-            "last correction below this fraction of the step's displacement. The creep forces "
-            "are known to about this (forward-difference tangent, the creep-force table's "
-            "interpolation, which is continuous but kinked between its a/b nodes).",
-            "", Range::closed(1e-12, 1e-3));
-  spec.flag("Line search", true,
-            "Halve a Newton correction that raises the residual (saturated creep forces make "
-            "full steps cycle); false: plain Newton.");
+  add_time_stepping_parameters(
+      spec,
+      "HHT alpha in [-1/3, 0] (beta = (1-alpha)^2/4, gamma = (1-2 alpha)/2). The default "
+      "damps the internal nodes' and the Hertz springs' highest modes, which the rails' "
+      "irregularities drive step to step; 0 (the average-acceleration rule, no numerical "
+      "damping) can leave Newton stalled there (docs/theory.md).",
+      false);
   spec.real("Initial lateral shift", 0, "Wheelset's lateral displacement at t = 0 (right).", "m");
   spec.real("Initial yaw", 0, "Wheelset's yaw at t = 0.", "rad");
   spec.real("Initial lateral velocity", 0, "Wheelset's lateral velocity at t = 0.", "m/s");

@@ -13,6 +13,7 @@
 #include "framework/time/newton_step.hpp"
 #include "physics/common/chart_script.hpp"
 #include "physics/common/profile_geometry.hpp"
+#include "physics/wheelset_dynamics/time_stepping.hpp"
 #include "physics/wheelset_dynamics/wheelset_contact_deck.hpp"
 #include "physics/wheelset_dynamics/wheelset_oscillation.hpp"
 #include "physics/wheelset_dynamics/wheelset_track.hpp"
@@ -195,10 +196,7 @@ void WheelsetDynamicsStep::run(StepContext& context) {
     track.accept(states);
   }
   v[o + 1] = p.get<double>("Initial lateral velocity");
-  NewtonSettings newton;
-  newton.max_iterations = p.get<int>("Newton iterations");
-  newton.line_search = p.get<bool>("Line search");
-  newton.residual_relative = newton.increment_relative = p.get<double>("Newton tolerance");
+  const NewtonSettings newton = newton_settings(p);
   NewtonStepSolver solver(track.system(), newton);
   solver.constrain(&track.constraints(), &track.saddle());
   {
@@ -270,15 +268,7 @@ void WheelsetDynamicsStep::run(StepContext& context) {
   auto progress = context.progress("time steps", static_cast<double>(n_steps));
   double time = 0, airborne_since = 1e300;
   for (long n = 0; n < n_steps; ++n) {
-    try {
-      integrator.step(time, dt, solver, u.data(), v.data(), a.data());
-    } catch (const StepNotConverged& error) {
-      std::ostringstream message;
-      message << context.path << ": Newton did not converge in the step from t = " << error.time
-              << " s (Δt " << error.step << " s): " << error.what()
-              << "; the run stops here rather than go on with an unbalanced state";
-      throw RunError(message.str());
-    }
+    step_or_stop(integrator, time, dt, solver, u.data(), v.data(), a.data(), context.path);
     time = (n + 1) * dt;
     states = system.contact_states(u.data() + o, v.data() + o);
     track.accept(states);
