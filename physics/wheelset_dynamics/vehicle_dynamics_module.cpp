@@ -77,6 +77,10 @@ ParameterSpec vehicle_dynamics_parameters() {
   spec.sublist("Structure deviation", structure_deviation_parameters(),
                "A displaced structure under the track (the published bending and translation "
                "shapes).");
+  spec.real("Y/Q window", 2,
+            "Track length of the sliding mean of each wheel's Y/Q reported beside its peak "
+            "(UIC 518 takes 2 m): a lifted wheel's instantaneous Y/Q says little.",
+            "m", Range::positive());
   spec.flag("Chart", true,
             "Draw <step>_chart.png (deviation, car body lateral acceleration at the first "
             "measuring point, the first wheelset's lateral motion and wheel forces with its "

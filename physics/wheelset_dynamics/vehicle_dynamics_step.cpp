@@ -223,6 +223,8 @@ void VehicleDynamicsStep::run(StepContext& context) {
   for (GlobalIndex node : points_)
     point_motion.push_back(model_->node_motion(node));
   VehicleRecorder recorder(context, system, point_names_, point_motion, static_loads);
+  const double window = p.get<double>("Y/Q window");
+  recorder.set_sliding_mean(static_cast<int>(std::lround(window / (V * dt))), window);
   const double interval = p.get<double>("History interval");
   const long n_steps = std::lround(std::ceil(end / dt - 1e-9));
   recorder.record(0, 0, u, v, a, states, true);

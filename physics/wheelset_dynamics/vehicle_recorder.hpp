@@ -32,6 +32,9 @@ class VehicleRecorder {
   VehicleRecorder(StepContext& context, VehicleSystem& system, std::vector<std::string> point_names,
                   std::vector<Eigen::MatrixXd> point_motion,
                   std::vector<std::array<double, 2>> static_loads);
+  /// Also reports each wheel's Y/Q as a sliding mean over the last \p samples calls of
+  /// record(), spanning \p length metres of track (UIC 518 takes 2 m); 1 sample: none.
+  void set_sliding_mean(int samples, double length);
   /// Takes the converged state at \p time (\p iterations Newton iterations): events, impacts and
   /// peaks every step, a history row when \p write_row.
   void record(double time, int iterations, const std::vector<double>& u,
@@ -48,7 +51,9 @@ class VehicleRecorder {
     double start = 0, end = 0, peak_flange = 0, peak_Y = 0, peak_Y_over_Q = 0;
   };
   struct WheelPeaks {
-    double Y_over_Q = 0, unloading = 0, Y = 0;
+    double Y_over_Q = 0, unloading = 0, Y = 0, mean_Y_over_Q = 0;
+    std::vector<double> recent;  // the last Y/Q values, a ring of window_ entries
+    double sum = 0;              // their sum
   };
 
   VehicleSystem& system_;
@@ -64,6 +69,8 @@ class VehicleRecorder {
   std::vector<std::array<WheelPeaks, 2>> peaks_;
   std::vector<double> peak_ay_, sum_ay2_;
   std::size_t samples_ = 0, n_events_ = 0;
+  int window_ = 1;            // samples in the sliding mean of Y/Q
+  double window_length_ = 0;  // the track length it spans (m), for the report
 };
 
 }  // namespace railfe
