@@ -175,18 +175,17 @@ CreepForces WheelRailContact::creep_forces(const HertzContact& hertz, const Cree
   return {};
 }
 
-bool WheelRailContact::uses_offline_table(const WheelsetPose& pose) const {
+bool WheelRailContact::offline() const {
   if (settings_.offline_table && !table_)
     throw std::logic_error("WheelRailContact: the offline-table model needs use_table()");
-  // Beyond the table's shifts (a wheel climbing its flange past every rigid pose of the pair)
-  // the point stays the table's last: continuous at the table's end, where a switch to the
-  // online search would jump (TS 20 m: Newton stalled there at 0.978 s), and near the truth on
-  // a steep flange, whose contact point hardly moves on the wheel until the flange's tip.
-  (void)pose;
   return settings_.offline_table;
 }
 
 ContactPoint WheelRailContact::offline_point(const WheelsetPose& pose) const {
+  // Beyond the table's shifts (a wheel climbing its flange past every rigid pose of the pair)
+  // the point stays the table's last (start() clamps): continuous at the table's end, where a
+  // switch to the online search would jump (TS 20 m: Newton stalled there at 0.978 s), and near
+  // the truth on a steep flange, whose contact point hardly moves on the wheel until its tip.
   const auto start = table_->start(side_, flange_, pose.lateral);
   return contact_at(*geometry_, side_, flange_, pose, start[0], start[1]);
 }
@@ -206,7 +205,7 @@ ContactState WheelRailContact::evaluate(const ContactKinematics& state) {
       return forces_at(state, point, nullptr);
     }
   }
-  if (uses_offline_table(pose)) {
+  if (offline()) {
     ++offline_points_;
     return forces_at(state, offline_point(pose), nullptr);
   }
@@ -367,7 +366,7 @@ void WheelRailContact::tangent(const ContactKinematics& state, const ContactStat
         (j < 6 ? moved.wheelset_v[j] : moved.node_v[j - 6]) += step;
       ContactPoint point = at.point;
       const WheelsetPose moved_pose = relative_pose(moved);
-      if (pass == 0 && uses_offline_table(moved_pose)) {
+      if (pass == 0 && offline()) {
         // The derivative of the offline model is that of its own point, not of a search.
         point = offline_point(moved_pose);
       } else if (pass == 0) {

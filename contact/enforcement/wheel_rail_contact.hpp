@@ -139,8 +139,8 @@ class WheelRailContact {
   bool flange() const { return flange_; }
 
  private:
-  // Whether the offline-table model gives the point at \p pose (settings and table's range).
-  bool uses_offline_table(const WheelsetPose& pose) const;
+  // Whether the offline-table model gives the points (throws std::logic_error without a table).
+  bool offline() const;
   // The offline model's point at \p pose: the table's wheel point, the gap taken there.
   ContactPoint offline_point(const WheelsetPose& pose) const;
   /// Pose of the wheelset relative to the node's rail displacement.

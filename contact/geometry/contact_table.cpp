@@ -130,30 +130,29 @@ ContactTable::ContactTable(const WheelRailGeometry& geometry, double max_shift, 
       }
 }
 
-std::array<double, 2> ContactTable::start(TrackSide side, bool flange, double lateral) const {
+std::pair<std::size_t, double> ContactTable::bracket(double lateral) const {
   const double position =
       std::clamp((lateral - first_) / step_, 0.0, static_cast<double>(rows_.size() - 1));
   const std::size_t i = std::min(static_cast<std::size_t>(position), rows_.size() - 2);
-  const double w = position - static_cast<double>(i);
+  return {i, position - static_cast<double>(i)};
+}
+
+std::array<double, 2> ContactTable::start(TrackSide side, bool flange, double lateral) const {
+  const auto [i, w] = bracket(lateral);
   const double* a = &starts_[8 * i + 4 * static_cast<int>(side) + 2 * (flange ? 1 : 0)];
   const double* b = a + 8;
   return {a[0] + w * (b[0] - a[0]), a[1] + w * (b[1] - a[1])};
 }
 
 double ContactTable::part_gap(TrackSide side, bool flange, double lateral) const {
-  const double position =
-      std::clamp((lateral - first_) / step_, 0.0, static_cast<double>(rows_.size() - 1));
-  const std::size_t i = std::min(static_cast<std::size_t>(position), rows_.size() - 2);
-  const double w = position - static_cast<double>(i);
+  const auto [i, w] = bracket(lateral);
   const int s = static_cast<int>(side), part = flange ? 1 : 0;
   return (1 - w) * rows_[i].parts[s][part].gap + w * rows_[i + 1].parts[s][part].gap;
 }
 
 const ContactPoint& ContactTable::part_point(TrackSide side, bool flange, double lateral) const {
-  const double position =
-      std::clamp((lateral - first_) / step_, 0.0, static_cast<double>(rows_.size() - 1));
-  return rows_[static_cast<std::size_t>(std::lround(position))]
-      .parts[static_cast<int>(side)][flange ? 1 : 0];
+  const auto [i, w] = bracket(lateral);
+  return rows_[w < 0.5 ? i : i + 1].parts[static_cast<int>(side)][flange ? 1 : 0];
 }
 
 double ContactTable::rolling_radius_difference(std::size_t i) const {

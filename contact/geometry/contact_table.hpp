@@ -6,6 +6,7 @@
 /// flange) and the start points of the online search.
 
 #include <array>
+#include <utility>
 #include <vector>
 
 #include "contact/geometry/contact_search.hpp"
@@ -44,10 +45,6 @@ class ContactTable {
   /// Start point (s_wheel, s_rail) for the online search of \p side's tread or flange at
   /// \p lateral (linear interpolation, clamped to the table's range).
   std::array<double, 2> start(TrackSide side, bool flange, double lateral) const;
-  /// Whether \p lateral lies within the table's shifts.
-  bool covers(double lateral) const {
-    return lateral >= first_ && lateral <= first_ + step_ * static_cast<double>(rows_.size() - 1);
-  }
   /// The gap of \p side's tread or flange part at the rigid contact of \p lateral (m, linear
   /// interpolation, clamped to the table's range): how far that part is from touching.
   double part_gap(TrackSide side, bool flange, double lateral) const;
@@ -64,6 +61,9 @@ class ContactTable {
   double centred_rolling_radius() const;
 
  private:
+  // The row below \p lateral and the fraction of the way to the next (clamped to the table).
+  std::pair<std::size_t, double> bracket(double lateral) const;
+
   double first_ = 0, step_ = 1;
   std::vector<RigidContact> rows_;
   // Start parameters, [row][side][part][wheel/rail], flattened for the lookup.

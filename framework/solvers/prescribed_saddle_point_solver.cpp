@@ -61,22 +61,27 @@ void PrescribedSaddlePointSolver::solve(const double* r, const double* r_c, doub
   const auto n = a.rows();
   const auto n_free = static_cast<Eigen::Index>(free_.size());
   x_.setZero(n);
-  for (std::size_t i = 0; i < prescribed_.size(); ++i)
-    x_(prescribed_[i]) = r_c[i] / coefficient_(static_cast<Eigen::Index>(i));
-  // r_f − A_fp x_p: A x_ holds A_·p x_p while x_ is zero on the free unknowns.
-  product_.noalias() = a * x_;
   rhs_.resize(n_free);
   for (Eigen::Index i = 0; i < n_free; ++i)
-    rhs_(i) = r[free_[i]] - product_(free_[i]);
+    rhs_(i) = r[free_[i]];
+  // r_f − A_fp x_p, column by column of the prescribed unknowns (contiguous in A).
+  for (std::size_t k = 0; k < prescribed_.size(); ++k) {
+    const Eigen::Index p = prescribed_[k];
+    x_(p) = r_c[k] / coefficient_(static_cast<Eigen::Index>(k));
+    if (x_(p) != 0)
+      for (Eigen::Index i = 0; i < n_free; ++i)
+        rhs_(i) -= a(free_[i], p) * x_(p);
+  }
   solution_ = lu_.solve(rhs_);
   for (Eigen::Index i = 0; i < n_free; ++i)
     x_(free_[i]) = solution_(i);
   check_backward_error(rhs_ - free_matrix_ * solution_, norm_, solution_, rhs_, limit_,
                        "prescribed-unknown saddle-point solve (dense LU of the free block)");
-  product_.noalias() = a * x_;
-  for (std::size_t i = 0; i < prescribed_.size(); ++i)
-    mu[i] =
-        (r[prescribed_[i]] - product_(prescribed_[i])) / coefficient_(static_cast<Eigen::Index>(i));
+  // The multipliers from the prescribed rows alone.
+  for (std::size_t k = 0; k < prescribed_.size(); ++k) {
+    const Eigen::Index p = prescribed_[k];
+    mu[k] = (r[p] - a.row(p).dot(x_)) / coefficient_(static_cast<Eigen::Index>(k));
+  }
   Eigen::Map<Eigen::VectorXd>(x, n) = x_;
 }
 

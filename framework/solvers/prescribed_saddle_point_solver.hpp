@@ -42,7 +42,7 @@ class PrescribedSaddlePointSolver : public SaddlePointSolver {
   Eigen::MatrixXd free_matrix_;  // A_ff
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
   double norm_ = 0;  // ‖A_ff‖∞
-  Eigen::VectorXd rhs_, solution_, x_, product_;
+  Eigen::VectorXd rhs_, solution_, x_;
   std::size_t factorizations_ = 0;
 };
 

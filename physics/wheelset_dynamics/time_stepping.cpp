@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "framework/base/error.hpp"
+#include "framework/deck/expression.hpp"
 
 namespace railfe {
 
@@ -30,6 +31,25 @@ void add_time_stepping_parameters(ParameterSpec& spec, const std::string& alpha_
                   "modified Newton: the first iteration's matrix for the whole step (cheaper "
                   "iterations, usually more of them)"}},
                 "How often Newton's matrix is formed.");
+  spec.real("History interval", 0, "Time between rows of the histories (0: every step).", "s",
+            Range::non_negative());
+}
+
+void add_irregularity_parameters(ParameterSpec& spec) {
+  spec.text("Lateral irregularity", "",
+            "Lateral offset of both rails (right positive) as a function of the track position s "
+            "(write it with the variable x) ('' = none).");
+  spec.text("Vertical irregularity", "",
+            "Vertical offset of both rails (down positive) as a function of s (variable x) ('' = "
+            "none).");
+}
+
+void check_time_stepping_parameters(const Teuchos::ParameterList& step, const std::string& source,
+                                    const std::string& path) {
+  for (const char* key : {"Lateral irregularity", "Vertical irregularity"})
+    function_of_x(step.get<std::string>(key), source, path + "/" + key);
+  if (step.get<double>("Time step") > step.get<double>("End time"))
+    throw_input_error(source, path + "/Time step", "is longer than End time", "at most End time");
 }
 
 NewtonSettings newton_settings(const Teuchos::ParameterList& step) {
@@ -53,6 +73,17 @@ void step_or_stop(NewmarkIntegrator& integrator, double time, double dt, NewtonS
             << "; the run stops here rather than go on with an unbalanced state";
     throw RunError(message.str());
   }
+}
+
+void add_newton_summary(RunSummary& summary, const std::string& section,
+                        const NewtonStatistics& statistics) {
+  summary.add(section, "steps", static_cast<double>(statistics.steps));
+  summary.add(section, "Newton iterations per step",
+              statistics.steps ? double(statistics.iterations) / statistics.steps : 0.0);
+  summary.add(section, "most Newton iterations in a step",
+              static_cast<double>(statistics.most_iterations));
+  summary.add(section, "wall time per Newton iteration (solve only)",
+              statistics.iterations ? statistics.seconds / statistics.iterations : 0.0, "s");
 }
 
 }  // namespace railfe

@@ -68,12 +68,7 @@ ParameterSpec vehicle_dynamics_parameters() {
       "(docs/verification.md#vehicle).",
       true);
   spec.real("Gravity", 9.81, "g, along +z (down).", "m/s^2", Range::non_negative());
-  spec.text("Lateral irregularity", "",
-            "Lateral offset of both rails (right positive) as a function of the track position s "
-            "(write it with the variable x) ('' = none).");
-  spec.text("Vertical irregularity", "",
-            "Vertical offset of both rails (down positive) as a function of s (variable x) ('' = "
-            "none).");
+  add_irregularity_parameters(spec);
   spec.sublist("Structure deviation", structure_deviation_parameters(),
                "A displaced structure under the track (the published bending and translation "
                "shapes).");
@@ -89,8 +84,6 @@ ParameterSpec vehicle_dynamics_parameters() {
             "An earlier vehicle dynamics step of this deck (another model of the same run): the "
             "chart draws its histories dashed beside this step's.");
   spec.only_when("Chart", {"true"}, {"Compare with step"});
-  spec.real("History interval", 0, "Time between rows of the histories (0: every step).", "s",
-            Range::non_negative());
   return spec;
 }
 

@@ -57,11 +57,7 @@ void VehicleDynamicsStep::check(const CheckContext& context) {
   const std::string& deck = context.source();
   geometry_ = read_profile_geometry(p, context);
   check_contact_parameters(*parameters_, context.source(), context.path);
-  for (const char* key : {"Lateral irregularity", "Vertical irregularity"})
-    function_of_x(p.get<std::string>(key), deck, context.path + "/" + key);
-  if (p.get<double>("Time step") > p.get<double>("End time"))
-    throw_input_error(deck, context.path + "/Time step", "is longer than End time",
-                      "at most End time");
+  check_time_stepping_parameters(p, deck, context.path);
   const SectionTable sections =
       structural_sections(context.model, "the vehicle dynamics step '" + context.step_name + "'");
   model_ = std::make_unique<DenseStructuralModel>(mesh, sections, deck);
@@ -299,14 +295,7 @@ void VehicleDynamicsStep::run(StepContext& context) {
                         static_cast<double>(offline));
   context.summary.add(section, "wheelsets", static_cast<double>(n_wheelsets));
   context.summary.add(section, "unknowns (vehicle, internal nodes)", static_cast<double>(n));
-  context.summary.add(section, "steps", static_cast<double>(statistics.steps));
-  context.summary.add(section, "Newton iterations per step",
-                      statistics.steps ? double(statistics.iterations) / statistics.steps : 0.0);
-  context.summary.add(section, "most Newton iterations in a step",
-                      static_cast<double>(statistics.most_iterations));
-  context.summary.add(section, "wall time per Newton iteration (solve only)",
-                      statistics.iterations ? statistics.seconds / statistics.iterations : 0.0,
-                      "s");
+  add_newton_summary(context.summary, section, statistics);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   context.summary.add(section, "wall time", seconds, "s");

@@ -9,8 +9,6 @@ namespace railfe {
 namespace {
 
 const char* kSides[2] = {"right", "left"};
-const char* kContactNames[n_wheelset_contacts] = {"right_tread", "right_flange", "left_tread",
-                                                  "left_flange"};
 
 std::vector<std::string> wheelset_columns(int n) {
   std::vector<std::string> columns{"time_s", "iterations"};
@@ -39,18 +37,6 @@ std::vector<std::string> point_columns(const std::vector<std::string>& names) {
 }
 
 }  // namespace
-
-std::array<double, 2> wheel_forces(const std::array<ContactState, n_wheelset_contacts>& states,
-                                   int side) {
-  const int first = 2 * side;
-  const double inward = side == 0 ? -1.0 : 1.0;  // the right wheel's centre side is −y
-  double Q = 0, Y = 0;
-  for (int k = first; k < first + 2; ++k) {
-    Q -= states[k].force[2];
-    Y += inward * states[k].force[1];
-  }
-  return {Q, Y};
-}
 
 VehicleRecorder::VehicleRecorder(StepContext& context, VehicleSystem& system,
                                  std::vector<std::string> point_names,
@@ -94,7 +80,8 @@ void VehicleRecorder::record(
       const bool now = states[w][k].active;
       if (!first && now != active_[w][k]) {
         ++n_events_;
-        events_.write_row({CsvWriter::format(time), std::to_string(w + 1), kContactNames[k],
+        events_.write_row({CsvWriter::format(time), std::to_string(w + 1),
+                           wheelset_contact_names[k],
                            now ? (k % 2 ? "flange contact" : "contact") : "separation",
                            CsvWriter::format(states[w][k].hertz.load)});
       }

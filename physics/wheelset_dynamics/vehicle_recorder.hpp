@@ -18,11 +18,6 @@
 
 namespace railfe {
 
-/// Vertical (Q, up on the wheel) and lateral (Y, towards the track centre on the wheel) force of
-/// wheel \p side (0 right, 1 left), summed over its tread and flange.
-std::array<double, 2> wheel_forces(const std::array<ContactState, n_wheelset_contacts>& states,
-                                   int side);
-
 /// The step's outputs (see the file comment).
 class VehicleRecorder {
  public:

@@ -12,6 +12,21 @@ constexpr bool kFlange[n_wheelset_contacts] = {false, true, false, true};
 
 }  // namespace
 
+const char* const wheelset_contact_names[n_wheelset_contacts] = {"right_tread", "right_flange",
+                                                                 "left_tread", "left_flange"};
+
+std::array<double, 2> wheel_forces(const std::array<ContactState, n_wheelset_contacts>& states,
+                                   int side) {
+  const int first = 2 * side;
+  const double inward = side == 0 ? -1.0 : 1.0;  // the right wheel's centre side is −y
+  double Q = 0, Y = 0;
+  for (int k = first; k < first + 2; ++k) {
+    Q -= states[k].force[2];
+    Y += inward * states[k].force[1];
+  }
+  return {Q, Y};
+}
+
 WheelsetContacts::WheelsetContacts(std::shared_ptr<const WheelRailGeometry> geometry,
                                    const WheelRailContactSettings& settings,
                                    WheelsetUnknowns unknowns, double speed, double spin)

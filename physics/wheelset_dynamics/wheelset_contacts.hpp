@@ -18,6 +18,14 @@ namespace railfe {
 /// Index of the contact points: right tread, right flange, left tread, left flange.
 constexpr int n_wheelset_contacts = 4;
 
+/// Names of the contact points in outputs, in their index order.
+extern const char* const wheelset_contact_names[n_wheelset_contacts];
+
+/// Vertical (Q, up on the wheel) and lateral (Y, towards the track centre on the wheel) force
+/// of wheel \p side (0 right, 1 left), summed over its tread and flange in \p states.
+std::array<double, 2> wheel_forces(const std::array<ContactState, n_wheelset_contacts>& states,
+                                   int side);
+
 /// Where a system keeps one wheelset's unknowns: its six motions (x, y, z, θx, θy, θz) from
 /// \p wheelset on, the internal nodes' (x, y, z per contact point, in contact order) from
 /// \p nodes on.

@@ -66,12 +66,7 @@ ParameterSpec wheelset_dynamics_parameters() {
   spec.real("Initial lateral shift", 0, "Wheelset's lateral displacement at t = 0 (right).", "m");
   spec.real("Initial yaw", 0, "Wheelset's yaw at t = 0.", "rad");
   spec.real("Initial lateral velocity", 0, "Wheelset's lateral velocity at t = 0.", "m/s");
-  spec.text("Lateral irregularity", "",
-            "Lateral offset of both rails (right positive) as a function of the track position s "
-            "(write it with the variable x) ('' = none).");
-  spec.text("Vertical irregularity", "",
-            "Vertical offset of both rails (down positive) as a function of s (variable x) ('' = "
-            "none).");
+  add_irregularity_parameters(spec);
   spec.text(
       "Lateral force", "",
       "Lateral force on the wheelset centre (N, to the right) as a function of time t (s), "
@@ -79,8 +74,6 @@ ParameterSpec wheelset_dynamics_parameters() {
   spec.flag("Chart", true,
             "Draw <step>_chart.png (shift, yaw, wheel forces and Y/Q against time) from the "
             "histories.");
-  spec.real("History interval", 0, "Time between rows of the histories (0: every step).", "s",
-            Range::non_negative());
   return spec;
 }
 

@@ -20,35 +20,13 @@
 
 namespace railfe {
 
-namespace {
-
-const char* kContactNames[n_wheelset_contacts] = {"right_tread", "right_flange", "left_tread",
-                                                  "left_flange"};
-
-// Vertical (Q, up on the wheel) and lateral (Y, towards the track centre on the wheel) forces
-// of one wheel, summed over its tread and flange.
-std::array<double, 2> wheel_forces(const std::array<ContactState, n_wheelset_contacts>& states,
-                                   int side) {
-  const int first = side == 0 ? 0 : 2;
-  const double inward = side == 0 ? -1.0 : 1.0;  // the right wheel's centre side is −y
-  double Q = 0, Y = 0;
-  for (int k = first; k < first + 2; ++k) {
-    Q -= states[k].force[2];
-    Y += inward * states[k].force[1];
-  }
-  return {Q, Y};
-}
-
-}  // namespace
-
 WheelsetDynamicsStep::WheelsetDynamicsStep(const Teuchos::ParameterList& parameters)
     : parameters_(&parameters) {}
 
 void WheelsetDynamicsStep::check(const CheckContext& context) {
   geometry_ = read_profile_geometry(*parameters_, context);
   check_contact_parameters(*parameters_, context.source(), context.path);
-  for (const char* key : {"Lateral irregularity", "Vertical irregularity"})
-    function_of_x(parameters_->get<std::string>(key), context.source(), context.path + "/" + key);
+  check_time_stepping_parameters(*parameters_, context.source(), context.path);
   const std::string force = parameters_->get<std::string>("Lateral force");
   if (!force.empty())
     Expression(force, context.source(), context.path + "/Lateral force");
@@ -58,10 +36,6 @@ void WheelsetDynamicsStep::check(const CheckContext& context) {
     throw_input_error(context.source(), context.path + "/Contact/Creep theory", error.what(),
                       "Poisson's ratio 0.3 with the table, or another theory");
   }
-  const double dt = parameters_->get<double>("Time step");
-  if (dt > parameters_->get<double>("End time"))
-    throw_input_error(context.source(), context.path + "/Time step", "is longer than End time",
-                      "at most End time");
   const auto& rails = parameters_->sublist("Rails");
   if (rails.get<std::string>("Model") == "springs")
     rail_spring_layout(rails, context.source(), context.path + "/Rails");
@@ -224,7 +198,7 @@ void WheelsetDynamicsStep::run(StepContext& context) {
   CsvWriter history(context.output.staging_path(context.step_name + "_wheelset.csv"), columns,
                     root);
   std::vector<std::string> contact_columns{"time_s"};
-  for (const char* name : kContactNames)
+  for (const char* name : wheelset_contact_names)
     for (const char* q : {"active", "rail_y_m", "rail_z_m", "rolling_radius_m", "contact_angle_rad",
                           "N_N", "Fx_N", "Fy_N", "xi", "eta", "phi_per_m"})
       contact_columns.push_back(std::string(name) + "_" + q);
@@ -281,7 +255,7 @@ void WheelsetDynamicsStep::run(StepContext& context) {
       if (states[k].active != active[k]) {
         active[k] = states[k].active;
         ++n_events;
-        events.write_row({CsvWriter::format(time), kContactNames[k],
+        events.write_row({CsvWriter::format(time), wheelset_contact_names[k],
                           active[k] ? (k % 2 ? "flange contact" : "contact") : "separation",
                           CsvWriter::format(states[k].hertz.load)});
       }
@@ -332,14 +306,7 @@ void WheelsetDynamicsStep::run(StepContext& context) {
                 context.output.staging_path(context.step_name + "_contacts.csv"),
                 context.output.staging_path(context.step_name + "_chart.png")});
   const NewtonStatistics& statistics = solver.statistics();
-  context.summary.add(section, "steps", static_cast<double>(statistics.steps));
-  context.summary.add(section, "Newton iterations per step",
-                      statistics.steps ? double(statistics.iterations) / statistics.steps : 0.0);
-  context.summary.add(section, "most Newton iterations in a step",
-                      static_cast<double>(statistics.most_iterations));
-  context.summary.add(section, "wall time per Newton iteration (solve only)",
-                      statistics.iterations ? statistics.seconds / statistics.iterations : 0.0,
-                      "s");
+  add_newton_summary(context.summary, section, statistics);
   context.summary.add(section, "contact events", static_cast<double>(n_events));
   std::size_t jumps = 0, edges = 0;
   for (int k = 0; k < n_wheelset_contacts; ++k) {
