@@ -1,6 +1,7 @@
 #include "physics/parts/vehicle_mesh.hpp"
 
 #include <array>
+#include <sstream>
 #include <vector>
 
 #include "framework/base/error.hpp"
@@ -57,16 +58,18 @@ VehicleLayout vehicle_layout(const Teuchos::ParameterList& sublist, const Deck& 
   layout.secondary_height = sublist.get<double>("Secondary height");
   layout.floor_height = sublist.get<double>("Floor height");
   layout.secondary_rotation = sublist.get<bool>("Secondary rotation");
-  if (layout.half_wheelbase >= layout.half_bogie_spacing)
-    throw_input_error(deck.source, "Mesh/Vehicle/Half wheelbase",
-                      "(" + std::to_string(layout.half_wheelbase) +
-                          " m) puts the inner wheelsets of the two bogies on or past each other",
+  std::ostringstream what;
+  if (layout.half_wheelbase >= layout.half_bogie_spacing) {
+    what << "(" << layout.half_wheelbase
+         << " m) puts the inner wheelsets of the two bogies on or past each other";
+    throw_input_error(deck.source, "Mesh/Vehicle/Half wheelbase", what.str(),
                       "less than Half bogie spacing");
-  if (layout.secondary_height <= layout.wheel_radius)
-    throw_input_error(
-        deck.source, "Mesh/Vehicle/Secondary height",
-        "is not above the axles (Wheel radius " + std::to_string(layout.wheel_radius) + " m)",
-        "a height above Wheel radius, between bogie frame and car body");
+  }
+  if (layout.secondary_height <= layout.wheel_radius) {
+    what << "is not above the axles (Wheel radius " << layout.wheel_radius << " m)";
+    throw_input_error(deck.source, "Mesh/Vehicle/Secondary height", what.str(),
+                      "a height above Wheel radius, between bogie frame and car body");
+  }
   return layout;
 }
 

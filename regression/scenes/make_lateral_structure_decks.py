@@ -9,6 +9,7 @@ contact search and creep-force table, then with the offline contact table and Ka
 theory saturated (the DIASTARS approach), charted on the same axes.
 
 Run from the repository root: /usr/bin/python3 regression/scenes/make_lateral_structure_decks.py
+[--check]   (--check: exit 1 if a shipped deck differs from what this would write)
 """
 import csv
 import os
@@ -104,12 +105,22 @@ def name_of(shape, span):
 
 
 def main():
+    check = "--check" in sys.argv[1:]
     p = {r["name"]: float(r["value"]) for r in csv.DictReader(open(PARAMETERS))}
+    stale = []
     for shape in ("bending", "translation"):
         for span in (20, 40):
-            with open(name_of(shape, span), "w") as f:
-                f.write(deck(shape, span, p))
-            print(name_of(shape, span))
+            path, text = name_of(shape, span), deck(shape, span, p)
+            if check:
+                if not os.path.exists(path) or open(path).read() != text:
+                    stale.append(path)
+                continue
+            with open(path, "w") as f:
+                f.write(text)
+            print(path)
+    if stale:
+        print("not what make_lateral_structure_decks.py writes (run it): " + ", ".join(stale))
+        sys.exit(1)
 
 
 if __name__ == "__main__":
