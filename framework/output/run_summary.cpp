@@ -28,6 +28,14 @@ void RunSummary::add(const std::string& section_name, const std::string& key, do
   section(section_name).lines.push_back({key, buffer, unit, value, true});
 }
 
+double RunSummary::number(const std::string& prefix, double fallback) const {
+  for (const auto& section : sections_)
+    for (const auto& line : section.lines)
+      if (line.is_number && line.key.compare(0, prefix.size(), prefix) == 0)
+        return line.number;
+  return fallback;
+}
+
 std::string RunSummary::text() const {
   std::ostringstream out;
   for (const auto& section : sections_) {

@@ -18,6 +18,8 @@ class RunSummary {
   /// Adds a number with its unit ("" for counts and ratios).
   void add(const std::string& section, const std::string& key, double value,
            const std::string& unit = "");
+  /// The first number whose key begins with \p prefix, in any section; \p fallback if none.
+  double number(const std::string& prefix, double fallback = 0) const;
   /// The summary as aligned text.
   std::string text() const;
   /// The summary as a JSON object of objects (numbers stay numbers, units go into the key as

@@ -8,13 +8,16 @@
 /// the contact point's lever about the beam axis, plus the irregularities. The rail profile is
 /// carried rigidly (its roll moves the contact point, it does not turn the profile). The same
 /// class holds rails on springs: a rigid body per rail that moves with the wheelset, its y, z and
-/// roll on springs to the ground. Axes are the track's: x along, y to the right, z down
-/// (docs/theory.md, "Rails on beams").
+/// roll on springs to the ground, and a structure under the track: a girder continuous over its
+/// spans on bearings at the piers, both rails fixed to it (the track beyond the structure
+/// rigid). Axes are the track's: x along, y to the right, z down (docs/theory.md, "Rails on
+/// beams", "A vehicle on a viaduct").
 
 #include <Eigen/Sparse>
 
 #include <array>
 #include <functional>
+#include <vector>
 
 #include "framework/time/constraint_set.hpp"
 #include "physics/implicit/moving_contact.hpp"
@@ -45,6 +48,23 @@ struct RailSpringLayout {
   double axis_depth = 0;              ///< the roll axis below the rail's top (m)
 };
 
+/// A structure under the track: a girder continuous over its spans (the rails run over the piers
+/// without a step or kink), on bearings at each pier between two spans, a spring–damper to the
+/// ground along x, y, z and about x, its ends held by the abutments along x, y, z and in roll;
+/// the rails fixed to it, the track before and after the structure rigid.
+struct GirderLayout {
+  BeamMaterial material;      ///< the girder's material
+  BeamSection section;        ///< local y = track y (lateral), local z = track z (vertical)
+  double start = 0;           ///< track position s of the first span's start (m)
+  double span = 20;           ///< span length (m)
+  int spans = 2;              ///< number of spans
+  int elements_per_span = 8;  ///< beam elements in a span
+  std::array<double, 4> bearing_stiffness{};  ///< per pier along x, y, z (N/m), roll (N m/rad)
+  std::array<double, 4> bearing_damping{};    ///< per pier (N s/m; N m s/rad)
+  double axis_depth = 0;                      ///< the girder's axis below the rails' top (m)
+  std::array<double, 2> rayleigh{};  ///< C += a_m M + a_k K of the girders: {a_m (1/s), a_k (s)}
+};
+
 /// Both rails' matrices and paths (right rail first, its unknowns first).
 class RailBeams {
  public:
@@ -57,6 +77,10 @@ class RailBeams {
   /// a whole number of spans, or a seat stiffness that is not positive (a rail free to move).
   RailBeams(const RailBeamLayout& layout, std::array<double, 2> axis_y,
             std::array<double, 2> axis_z);
+  /// The girders of \p layout (both sides travel the same path), their axis on the track's
+  /// centre line at depth \p axis_z. Throws std::invalid_argument for no span, a span or an
+  /// element count that is not positive, or a bearing stiffness that is not positive.
+  RailBeams(const GirderLayout& layout, double axis_z);
   /// Number of unknowns (6 per node, both rails).
   std::size_t n_unknowns() const { return n_unknowns_; }
   /// M (consistent or lumped beam mass).
@@ -65,6 +89,11 @@ class RailBeams {
   const Eigen::SparseMatrix<double>& damping() const { return damping_; }
   /// K (beams and seats).
   const Eigen::SparseMatrix<double>& stiffness() const { return stiffness_; }
+  /// Track position s of the paths' start (0 for rails; the first span's start for girders).
+  double origin() const { return origin_; }
+  /// Whether the track is rigid where s lies off the paths (girders: before and after the
+  /// structure); otherwise s must stay on them.
+  bool rigid_beyond() const { return rigid_beyond_; }
   /// Whether the rails are rigid bodies on springs (no paths; point_unknown()).
   bool on_springs() const { return paths_.empty(); }
   /// The beam path of \p side (s = x); beams only.
@@ -78,34 +107,46 @@ class RailBeams {
 
  private:
   static int index(TrackSide side) { return side == TrackSide::right ? 0 : 1; }
+  // M, C and K of n_unknowns_ rows from their entries.
+  void set_matrices(const std::vector<Eigen::Triplet<double>>& k,
+                    const std::vector<Eigen::Triplet<double>>& m,
+                    const std::vector<Eigen::Triplet<double>>& c);
   std::size_t n_unknowns_ = 0;
   Eigen::SparseMatrix<double> mass_, damping_, stiffness_;
   std::vector<BeamPath> paths_;  // right, left
   std::array<double, 2> axis_y_, axis_z_;
+  double origin_ = 0;
+  bool rigid_beyond_ = false;
 };
 
 /// The internal nodes of the wheelset's four contact points tied to the rail beams (see the
-/// file comment); the vehicle's unknowns follow the rails' in the coupled system.
+/// file comment), for each of a vehicle's wheelsets; the vehicle's unknowns follow the rails' in
+/// the coupled system.
 class BeamRails : public ConstraintSet {
  public:
-  /// Ties for \p rails (not owned) with the wheelset's unknowns from \p vehicle_offset, the
+  /// Ties for \p rails (not owned) with the vehicle's unknowns from \p vehicle_offset, the
   /// irregularities \p lateral and \p vertical (functions of s, either may be empty: zero; right
-  /// and down), the wheelset at s = \p start + \p speed t.
+  /// and down), the reference point at s = \p start + \p speed t, the rows of \p wheelsets in
+  /// turn (their nodes counted from \p vehicle_offset; default: one wheelset at the reference
+  /// point, nodes from 6 on).
   BeamRails(const RailBeams& rails, std::size_t vehicle_offset,
             std::function<double(double)> lateral, std::function<double(double)> vertical,
-            double start, double speed);
-  /// Takes each contact point's rail point as the lever of the rail's roll for the rows written
-  /// from now on (the rows stay fixed within a step: the levers are the last accepted ones).
-  void set_levers(const std::array<ContactState, n_wheelset_contacts>& states);
-  /// Three rows per internal node; throws RunError when s leaves the rails.
+            double start, double speed, std::vector<RailedWheelset> wheelsets = {RailedWheelset{}});
+  /// Takes each contact point of wheelset \p wheelset as the lever of the rail's roll for the
+  /// rows written from now on (the rows stay fixed within a step: the levers are the last
+  /// accepted ones).
+  void set_levers(const std::array<ContactState, n_wheelset_contacts>& states, int wheelset = 0);
+  /// Three rows per internal node; throws RunError when s leaves rails that have no rigid
+  /// track beyond them.
   void rows_at(double time, ConstraintRows& rows) override;
   /// By central differences of the rows over ±1 mm of s (rates_by_differences()).
   void rates(double time, const double* u, const double* v, std::size_t n_rows, double* velocity,
              double* acceleration) override;
-  /// Lateral and vertical irregularity at \p time.
-  std::array<double, 2> offsets(double time) const;
-  /// The rails' displacements (x, y, z) under the four contact points at \p time for the rails'
-  /// unknowns \p u, point after point: each internal node's position less the irregularities.
+  /// Lateral and vertical irregularity at \p time, \p position ahead of the reference point.
+  std::array<double, 2> offsets(double time, double position = 0) const;
+  /// The rails' displacements (x, y, z) under the first wheelset's four contact points at
+  /// \p time for the rails' unknowns \p u, point after point: each internal node's position
+  /// less the irregularities.
   std::array<double, 3 * n_wheelset_contacts> rail_displacements(double time, const double* u);
 
  private:
@@ -113,7 +154,9 @@ class BeamRails : public ConstraintSet {
   std::size_t offset_;
   std::function<double(double)> lateral_, vertical_;
   double start_, speed_;
-  std::array<std::array<double, 2>, n_wheelset_contacts> levers_{};  // {y, z} per point
+  std::vector<RailedWheelset> wheelsets_;
+  // {y, z} per point, per wheelset
+  std::vector<std::array<std::array<double, 2>, n_wheelset_contacts>> levers_;
 };
 
 }  // namespace railfe

@@ -3,6 +3,8 @@
 #include "physics/common/profile_geometry.hpp"
 #include "physics/wheelset_dynamics/time_stepping.hpp"
 #include "physics/wheelset_dynamics/vehicle_dynamics_step.hpp"
+#include "physics/wheelset_dynamics/vehicle_structure.hpp"
+#include "physics/wheelset_dynamics/vehicle_sweep.hpp"
 #include "physics/wheelset_dynamics/wheelset_contact_deck.hpp"
 
 namespace railfe {
@@ -41,7 +43,8 @@ ParameterSpec vehicle_dynamics_parameters() {
       "A vehicle from the mesh (Mesh/Type vehicle, or any mesh of beams, point masses, "
       "spring-dampers and rigid links in track axes: x forward, y right, z down) on rigid rails: "
       "the implicit wheel-rail contact element at tread and flange of each wheel of every "
-      "wheelset node, contact forces as Lagrange multipliers, HHT-alpha from the static "
+      "wheelset node, optionally over girders (Structure), contact forces as Lagrange multipliers, "
+      "HHT-alpha from the static "
       "balance.");
   spec.sublist("Profiles", profile_parameters(), "Profile files.");
   spec.sublist("Track", track_parameters(), "Track and wheelset dimensions.");
@@ -72,6 +75,11 @@ ParameterSpec vehicle_dynamics_parameters() {
   spec.sublist("Structure deviation", structure_deviation_parameters(),
                "A displaced structure under the track (the published bending and translation "
                "shapes).");
+  spec.sublist("Structure", vehicle_structure_parameters(),
+               "What carries the track: rigid, or girders that deflect under the vehicle.");
+  spec.sublist("Sweep", vehicle_sweep_parameters(),
+               "Many cases of this step over speeds, spans and amplitudes, in parallel over the "
+               "MPI ranks.");
   spec.real("Y/Q window", 2,
             "Track length of the sliding mean of each wheel's Y/Q reported beside its peak "
             "(UIC 518 takes 2 m): a lifted wheel's instantaneous Y/Q says little.",

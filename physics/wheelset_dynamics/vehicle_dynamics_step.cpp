@@ -12,6 +12,7 @@
 #include "framework/deck/expression.hpp"
 #include "framework/output/csv_writer.hpp"
 #include "framework/solvers/prescribed_saddle_point_solver.hpp"
+#include "framework/solvers/saddle_point_solvers.hpp"
 #include "framework/time/newmark.hpp"
 #include "framework/time/newton_step.hpp"
 #include "physics/common/chart_script.hpp"
@@ -20,6 +21,7 @@
 #include "physics/wheelset_dynamics/time_stepping.hpp"
 #include "physics/wheelset_dynamics/vehicle_balance.hpp"
 #include "physics/wheelset_dynamics/vehicle_recorder.hpp"
+#include "physics/wheelset_dynamics/vehicle_structure.hpp"
 #include "physics/wheelset_dynamics/wheelset_contact_deck.hpp"
 #include "physics/wheelset_dynamics/wheelset_system.hpp"
 
@@ -109,6 +111,34 @@ void VehicleDynamicsStep::check(const CheckContext& context) {
                         "'" + reference + "' is not a vehicle dynamics step before this one",
                         "the name of an earlier vehicle dynamics step of the deck");
   }
+  const double start = p.get<double>("Start");
+  const VehicleCase base{p.get<double>("Speed"), p.get<double>("End time"), deviation_settings(p)};
+  cases_ = sweep_cases(p, base, deck, context.path);
+  girders_.reset();
+  const auto& structure = p.sublist("Structure");
+  if (structure_is_girders(structure)) {
+    const std::string path = context.path + "/Structure";
+    girders_ = girder_layout(structure, deck, path);
+    // The girders start at rest and unloaded: the vehicle must start before them.
+    for (GlobalIndex node : wheelsets_)
+      if (start + mesh.node(node)[0] >= girders_->start) {
+        std::ostringstream what;
+        what << "(" << girders_->start << " m) is not ahead of wheelset node " << node + 1
+             << ", at s = " << start + mesh.node(node)[0]
+             << " m at t = 0: the girders start at rest and unloaded, so the vehicle must "
+                "start before them";
+        throw_input_error(deck, path + "/Start", what.str(),
+                          "a Start beyond every wheelset's s at t = 0 (Start + its x)");
+      }
+    if (base.deviation.shape != DeviationShape::none &&
+        std::abs(girders_->span - base.deviation.span) > 1e-9 * base.deviation.span)
+      throw_input_error(deck, path + "/Span",
+                        "differs from Structure deviation/Span: the deviation displaces the "
+                        "girders' piers",
+                        "the deviation's Span (" + CsvWriter::format(base.deviation.span) + " m)");
+    for (const VehicleCase& c : cases_.empty() ? std::vector<VehicleCase>{base} : cases_)
+      check_deviation_on_girders(*girders_, c.deviation, deck, path);
+  }
   points_.clear();
   point_names_.clear();
   for (const std::string& name : p.get<Teuchos::Array<std::string>>("Measuring points")) {
@@ -122,11 +152,27 @@ void VehicleDynamicsStep::check(const CheckContext& context) {
 
 void VehicleDynamicsStep::run(StepContext& context) {
   const auto& p = *parameters_;
-  const bool root = context.model.comm().is_root();
+  if (cases_.empty()) {
+    const VehicleCase base{p.get<double>("Speed"), p.get<double>("End time"),
+                           deviation_settings(p)};
+    run_case(context, base, context.model.comm().is_root(), true);
+    return;
+  }
+  run_sweep(
+      context, cases_,
+      [this](StepContext& case_context, const VehicleCase& c) {
+        return run_case(case_context, c, true, false);
+      },
+      "Step " + context.step_name + " (vehicle dynamics)");
+}
+
+CaseOutcome VehicleDynamicsStep::run_case(StepContext& context, const VehicleCase& c, bool writes,
+                                          bool alone) {
+  const auto& p = *parameters_;
   const std::string section = "Step " + context.step_name + " (vehicle dynamics)";
   const auto wall_start = std::chrono::steady_clock::now();
   const Mesh& mesh = context.model.mesh();
-  const double V = p.get<double>("Speed");
+  const double V = c.speed;
   const Eigen::VectorXd weight =
       model_->gravity_load(Eigen::Vector3d(0, 0, p.get<double>("Gravity")));
   VehicleSystem system(*model_, wheelsets_, geometry_, contact_settings(p), V, weight);
@@ -144,23 +190,45 @@ void VehicleDynamicsStep::run(StepContext& context) {
   // The rails' lateral offset: the deck's irregularity plus the structure's deviation.
   const auto irregularity = function_of_x(p.get<std::string>("Lateral irregularity"),
                                           context.source(), context.path + "/Lateral irregularity");
-  const auto deviation = std::make_shared<StructureDeviation>(deviation_settings(p));
+  const auto deviation = std::make_shared<StructureDeviation>(c.deviation);
   const std::function<double(double)> lateral = [irregularity, deviation](double s) {
     return (irregularity ? irregularity(s) : 0.0) + deviation->rail(s);
   };
+  const auto vertical = function_of_x(p.get<std::string>("Vertical irregularity"), context.source(),
+                                      context.path + "/Vertical irregularity");
+  const double start = p.get<double>("Start");
+  const double end = c.end_time, dt = p.get<double>("Time step");
+
+  // The structure: none (rigid rails) or girders coupled to the vehicle, whose unknowns then
+  // follow the girders'.
+  std::unique_ptr<VehicleStructure> structure;
+  std::size_t offset = 0;
   std::vector<RailedWheelset> railed;
+  if (girders_) {
+    GirderLayout layout = *girders_;
+    if (c.deviation.shape != DeviationShape::none)
+      layout.span = c.deviation.span;  // a sweep's span
+    structure = std::make_unique<VehicleStructure>(layout, *geometry_, system);
+    offset = structure->offset();
+  }
   for (int w = 0; w < n_wheelsets; ++w)
     railed.push_back({mesh.node(wheelsets_[w])[0], system.wheelset(w).unknowns().nodes});
-  const double start = p.get<double>("Start");
-  RigidRails rails(lateral,
-                   function_of_x(p.get<std::string>("Vertical irregularity"), context.source(),
-                                 context.path + "/Vertical irregularity"),
-                   start, V, railed);
-  const double end = p.get<double>("End time"), dt = p.get<double>("Time step");
-  if (deviation_settings(p).shape != DeviationShape::none) {
+  std::unique_ptr<ConstraintSet> rails;
+  BeamRails* beam_rails = nullptr;
+  if (structure) {
+    auto ties = std::make_unique<BeamRails>(structure->girders(), offset, lateral, vertical, start,
+                                            V, railed);
+    beam_rails = ties.get();
+    rails = std::move(ties);
+  } else {
+    rails = std::make_unique<RigidRails>(lateral, vertical, start, V, railed);
+  }
+  SecondOrderSystem& whole =
+      structure ? structure->system() : static_cast<SecondOrderSystem&>(system);
+  if (c.deviation.shape != DeviationShape::none) {
     // The track's lateral offset along the stretch the vehicle runs over, for charts.
     CsvWriter file(context.output.staging_path(context.step_name + "_deviation.csv"),
-                   {"s_m", "structure_m", "rail_m"}, root);
+                   {"s_m", "structure_m", "rail_m"}, writes);
     double first = start, last = start + V * end;
     for (const RailedWheelset& r : railed) {
       first = std::min(first, start + r.position);
@@ -170,29 +238,36 @@ void VehicleDynamicsStep::run(StepContext& context) {
       file.write_row({s, deviation->structure(s), deviation->rail(s)});
   }
 
-  // The internal nodes on the rails, then the static balance.
-  const std::size_t n = system.n_unknowns();
+  // The internal nodes on the rails (the girders start at rest, unloaded: the vehicle starts
+  // before them), then the static balance of the vehicle.
+  const std::size_t n = whole.n_unknowns();
   std::vector<double> u(n, 0.0), v(n, 0.0), a(n, 0.0);
   ConstraintRows rows;
-  rails.rows_at(0, rows);
+  rails->rows_at(0, rows);
   for (std::size_t r = 0; r < rows.size(); ++r)
     u[rows.columns[rows.offsets[r]]] = rows.rhs[r] / rows.values[rows.offsets[r]];
+  const auto vehicle_part = [offset](std::vector<double>& x) { return x.data() + offset; };
+  std::vector<double> uv(u.begin() + static_cast<long>(offset), u.end());
   VehicleBalance balance;
   try {
-    balance = balance_vehicle(system, *geometry_, u);
+    balance = balance_vehicle(system, *geometry_, uv);
   } catch (const RunError& error) {
     throw RunError(context.path + ": " + error.what());
   }
+  std::copy(uv.begin(), uv.end(), vehicle_part(u));
   context.summary.add(section, "weight", balance.weight, "N");
   context.summary.add(section, "static balance iterations", balance.iterations);
   std::vector<std::array<ContactState, n_wheelset_contacts>> states(n_wheelsets);
   auto evaluate_states = [&]() {
-    for (int w = 0; w < n_wheelsets; ++w)
-      states[w] = system.wheelset(w).states(u.data(), v.data());
+    for (int w = 0; w < n_wheelsets; ++w) {
+      states[w] = system.wheelset(w).states(vehicle_part(u), vehicle_part(v));
+      if (beam_rails)
+        beam_rails->set_levers(states[w], w);
+    }
   };
   evaluate_states();
   std::vector<std::array<double, 2>> static_loads(n_wheelsets);
-  write_static_loads(context, section, states, static_loads);
+  write_static_loads(context, section, states, static_loads, writes);
 
   // Rolling: each wheelset spins without longitudinal creep at its mean tread radius.
   for (int w = 0; w < n_wheelsets; ++w) {
@@ -202,13 +277,17 @@ void VehicleDynamicsStep::run(StepContext& context) {
     system.wheelset(w).set_rolling(true);
   }
   const NewtonSettings newton = newton_settings(p);
-  PrescribedSaddlePointSolver saddle(system);
-  NewtonStepSolver solver(system, newton);
-  solver.constrain(&rails, &saddle);
+  std::unique_ptr<SaddlePointSolver> saddle;
+  if (structure)
+    saddle = std::make_unique<BlockSaddlePointSolver>(structure->coupled());
+  else
+    saddle = std::make_unique<PrescribedSaddlePointSolver>(system);
+  NewtonStepSolver solver(whole, newton);
+  solver.constrain(rails.get(), saddle.get());
   {
     // The internal nodes move with the rails' rates.
     std::vector<double> rate(rows.size()), unused(rows.size());
-    rails.rates(0, u.data(), v.data(), rate.size(), rate.data(), unused.data());
+    rails->rates(0, u.data(), v.data(), rate.size(), rate.data(), unused.data());
     for (std::size_t r = 0; r < rows.size(); ++r)
       v[rows.columns[rows.offsets[r]]] = rate[r];
   }
@@ -218,19 +297,43 @@ void VehicleDynamicsStep::run(StepContext& context) {
   std::vector<Eigen::MatrixXd> point_motion;
   for (GlobalIndex node : points_)
     point_motion.push_back(model_->node_motion(node));
-  VehicleRecorder recorder(context, system, point_names_, point_motion, static_loads);
+  VehicleRecorder recorder(context, system, point_names_, point_motion, static_loads, writes);
   const double window = p.get<double>("Y/Q window");
   recorder.set_sliding_mean(static_cast<int>(std::lround(window / (V * dt))), window);
+  std::unique_ptr<GirderRecorder> girder_recorder;
+  if (structure)
+    girder_recorder = std::make_unique<GirderRecorder>(context, *structure, writes);
   const double interval = p.get<double>("History interval");
   const long n_steps = std::lround(std::ceil(end / dt - 1e-9));
-  recorder.record(0, 0, u, v, a, states, true);
+  std::vector<double> vehicle_u(uv.size()), vehicle_v(uv.size()), vehicle_a(uv.size());
+  const auto record = [&](double time, int iterations, bool row) {
+    for (std::size_t i = 0; i < uv.size(); ++i) {
+      vehicle_u[i] = u[offset + i];
+      vehicle_v[i] = v[offset + i];
+      vehicle_a[i] = a[offset + i];
+    }
+    recorder.record(time, iterations, vehicle_u, vehicle_v, vehicle_a, states, row);
+    if (girder_recorder)
+      girder_recorder->record(time, u.data(), row);
+  };
+  record(0, 0, true);
   double next_output = interval;
   std::vector<double> airborne_since(n_wheelsets, 1e300);
   auto progress = context.progress("time steps", static_cast<double>(n_steps));
   const auto stepping_start = std::chrono::steady_clock::now();
   double time = 0;
+  CaseOutcome outcome;
   for (long step = 0; step < n_steps; ++step) {
-    step_or_stop(integrator, time, dt, solver, u.data(), v.data(), a.data(), context.path);
+    try {
+      step_or_stop(integrator, time, dt, solver, u.data(), v.data(), a.data(), context.path);
+    } catch (const RunError& error) {
+      if (alone)  // a run of its own fails; a sweep's case reports it and the sweep goes on
+        throw;
+      outcome.stop = "Newton failed";
+      outcome.stopped_at = time;
+      outcome.message = error.what();
+      break;
+    }
     time = (step + 1) * dt;
     evaluate_states();
     // A wheelset with no wheel touching for 50 ms has left the rails (a climb or a jump over):
@@ -244,7 +347,7 @@ void VehicleDynamicsStep::run(StepContext& context) {
         derailed = w;
     }
     const bool row = time >= next_output - 1e-9 * dt || step + 1 == n_steps || derailed >= 0;
-    recorder.record(time, solver.statistics().last_iterations, u, v, a, states, row);
+    record(time, solver.statistics().last_iterations, row);
     if (row)
       next_output += interval;
     progress.update(static_cast<double>(step + 1));
@@ -252,7 +355,9 @@ void VehicleDynamicsStep::run(StepContext& context) {
       context.summary.add(section,
                           "wheelset " + std::to_string(derailed + 1) + " left the rails at",
                           airborne_since[derailed], "s");
-      if (root)
+      outcome.stop = "wheelset " + std::to_string(derailed + 1) + " left the rails";
+      outcome.stopped_at = airborne_since[derailed];
+      if (writes && alone)
         std::cerr << "warning: " << context.path << ": wheelset " << derailed + 1
                   << " left the rails at t = " << airborne_since[derailed]
                   << " s (no wheel touching for 50 ms); the run ends at t = " << time << " s\n";
@@ -263,7 +368,9 @@ void VehicleDynamicsStep::run(StepContext& context) {
   const double stepping =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - stepping_start).count();
   recorder.finish(time, context.summary, section);
-  if (p.get<bool>("Chart")) {
+  if (girder_recorder)
+    girder_recorder->finish(context.summary, section);
+  if (alone && p.get<bool>("Chart")) {
     const std::string reference = p.get<std::string>("Compare with step");
     const auto path = [&](const char* name) {
       return context.output.staging_path(context.step_name + name);
@@ -275,7 +382,7 @@ void VehicleDynamicsStep::run(StepContext& context) {
         context, section, "vehicle_dynamics_chart.py",
         {path("_wheelsets.csv"), path("_wheels.csv"), path("_points.csv"),
          path("_flange_impacts.csv"),
-         deviation_settings(p).shape != DeviationShape::none ? path("_deviation.csv") : "-",
+         c.deviation.shape != DeviationShape::none ? path("_deviation.csv") : "-",
          CsvWriter::format(V), CsvWriter::format(start), CsvWriter::format(railed[0].position),
          path("_chart.png"), context.step_name, reference_file("_wheelsets.csv"),
          reference_file("_wheels.csv"), reference_file("_points.csv"), reference});
@@ -294,23 +401,28 @@ void VehicleDynamicsStep::run(StepContext& context) {
     context.summary.add(section, "contact points from the offline table",
                         static_cast<double>(offline));
   context.summary.add(section, "wheelsets", static_cast<double>(n_wheelsets));
-  context.summary.add(section, "unknowns (vehicle, internal nodes)", static_cast<double>(n));
+  context.summary.add(section,
+                      structure ? "unknowns (girders, vehicle, internal nodes)"
+                                : "unknowns (vehicle, internal nodes)",
+                      static_cast<double>(n));
   add_newton_summary(context.summary, section, statistics);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   context.summary.add(section, "wall time", seconds, "s");
   context.summary.add(section, "wall time per step", seconds / std::max(1L, n_steps), "s");
   context.summary.add(section, "wall time of the time steps (with their output)", stepping, "s");
-  context.summary.add(section, "simulated time per wall time of the time steps", time / stepping);
+  context.summary.add(section, "simulated time per wall time of the time steps",
+                      time / std::max(stepping, 1e-9));
+  return outcome;
 }
 
 void VehicleDynamicsStep::write_static_loads(
     StepContext& context, const std::string& section,
     const std::vector<std::array<ContactState, n_wheelset_contacts>>& states,
-    std::vector<std::array<double, 2>>& loads) const {
+    std::vector<std::array<double, 2>>& loads, bool writes) const {
   CsvWriter file(context.output.staging_path(context.step_name + "_static.csv"),
                  {"wheelset", "wheel", "Q_N", "Y_N", "contact_angle_rad", "rolling_radius_m"},
-                 context.model.comm().is_root());
+                 writes);
   const char* sides[2] = {"right", "left"};
   double total = 0, lightest = 1e300, heaviest = 0;
   for (std::size_t w = 0; w < states.size(); ++w)

@@ -41,9 +41,9 @@ std::vector<std::string> point_columns(const std::vector<std::string>& names) {
 VehicleRecorder::VehicleRecorder(StepContext& context, VehicleSystem& system,
                                  std::vector<std::string> point_names,
                                  std::vector<Eigen::MatrixXd> point_motion,
-                                 std::vector<std::array<double, 2>> static_loads)
+                                 std::vector<std::array<double, 2>> static_loads, bool writes)
     : system_(system),
-      root_(context.model.comm().is_root()),
+      root_(writes),
       point_names_(std::move(point_names)),
       point_motion_(std::move(point_motion)),
       static_loads_(std::move(static_loads)),

@@ -21,12 +21,13 @@ namespace railfe {
 /// The step's outputs (see the file comment).
 class VehicleRecorder {
  public:
-  /// Opens the CSV files of step \p context (rank 0 writes) for \p system's wheelsets and the
-  /// measuring points \p point_names whose motions \p point_motion gives from the model's
-  /// unknowns; \p static_loads are the wheels' Q at rest, [wheelset][side].
+  /// Opens the CSV files of step \p context (written on the ranks where \p writes) for
+  /// \p system's wheelsets and the measuring points \p point_names whose motions
+  /// \p point_motion gives from the model's unknowns; \p static_loads are the wheels' Q at
+  /// rest, [wheelset][side].
   VehicleRecorder(StepContext& context, VehicleSystem& system, std::vector<std::string> point_names,
                   std::vector<Eigen::MatrixXd> point_motion,
-                  std::vector<std::array<double, 2>> static_loads);
+                  std::vector<std::array<double, 2>> static_loads, bool writes);
   /// Also reports each wheel's Y/Q as a sliding mean over the last \p samples calls of
   /// record(), spanning \p length metres of track (UIC 518 takes 2 m); 1 sample: none.
   void set_sliding_mean(int samples, double length);

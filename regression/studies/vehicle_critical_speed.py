@@ -4,9 +4,10 @@
 dynamics module (time simulations, Kalker's linear creep).
 
 The linear model is the 42-DOF rigid-body vehicle of vehicle_modes_fit.py (full_matrices(): the
-calibrated parameter set of vehicle_parameters.csv, the wheelsets free) plus, at each wheelset,
-the linearised wheel-rail forces at the static contact, with V as parameter. Two versions of the
-contact terms:
+calibrated parameter set of vehicle_parameters.csv, the wheelsets free; the wheelset centres and
+axle boxes at R_NOMINAL = 0.46 m, the height railfe gives them, not the test car's 0.43 m) plus,
+at each wheelset, the linearised wheel-rail forces at the static contact, with V as parameter.
+Two versions of the contact terms:
 
   "classical": Wickens' equations (wickens_critical_speed.py, same profiles, same helpers):
       the wheelset's roll and vertical motion follow its lateral shift on the rigid rails
@@ -19,14 +20,16 @@ contact terms:
       Hertz ellipse of each wheel; lambda, e, r0, sigma of wickens_critical_speed; kappa =
       r0 sigma; k_g = W sigma (W the wheelset's vertical load). The roll-slip term has the sign
       of railfe's kinematics (the contact point, r0 below the centre, moves with y' (1 + kappa):
-      roll = -sigma y, slip_y = y' - r0 roll'); wickens_critical_speed.py writes (1 - kappa).
+      roll = -sigma y, slip_y = y' - r0 roll'), as wickens_critical_speed.py's; the yaw's
+      lateral creepage is Wickens' psi (wickens_critical_speed's gamma = 1).
   "railfe": the same creepage and force formulas as railfe's contact element
       (contact/enforcement/wheel_rail_contact.cpp: swept velocity omega x p, creepages
       (slip_x, slip.t, omega.n)/V, Kalker linear forces along x, t = n x x and n, the contact
       search ignoring yaw, Hertz's normal spring), on the exact 2-D cone/crown geometry,
       differentiated numerically about the static contact: 6 DOFs per wheelset, nothing
       constrained. It adds to "classical" what railfe does besides Wickens: the yaw-neglected
-      contact point (the yaw's lateral creepage is (1 + delta e / r0) psi: +4 %), the static
+      contact point (the yaw's lateral creepage is (1 + e tan(delta) / r0) psi: +4 %,
+      wickens_critical_speed.YAW_CREEP, the reference of that script), the static
       spin creepage's forces and the loads' changes.
 
 The railfe runs: the vehicle and Sections of vehicle_parameters.csv (as
@@ -36,14 +39,15 @@ HHT alpha 0, time step 0.5 ms, a lateral bump of the rails (s = 12..14 m, sin^2;
 passed wheelset 4 and one more cycle: the growth per cycle from successive positive peaks (mean
 over the last 6 cycles; the critical speed where it crosses 1), and the dominant poles of a
 matrix-pencil fit (above V_cr two car-body modes grow at close frequencies and beat, which puts
-the peak ratios several per cent off; the poles match the eigenvalues to 0.2 %).
+the peak ratios several per cent off; the poles match the eigenvalues to 0.25 %).
 
 Results (regenerate with `all`): car-body hunting (car body yaw 72 % of the kinetic energy, the
 bogies' wheelsets in antiphase, 1.36 Hz, 43 m wavelength ~ the rigid bogie's kinematic 44.9 m)
-sets V_cr = 58.69 m/s (linear, railfe kinematics) / 58.91 (classical) against 58.64 m/s from the
-railfe runs. Stable at 83.33 m/s with yaw dampers between car body and each bogie of
-FIX_YAW_DAMPING (railfe's 'secondary_rotation' block): V_cr 104.5 m/s. See docs/data/
-vehicle_critical_speed.csv and docs/img/vehicle_critical_speed.png.
+sets V_cr = 58.71 m/s (linear, railfe kinematics) / 58.92 (classical) against 58.65 m/s from the
+railfe runs (growth 0.919 at 55.78 m/s, 1.002 at 58.71 m/s). Stable at 83.33 m/s with yaw
+dampers between car body and each bogie of FIX_YAW_DAMPING (railfe's 'secondary_rotation' block):
+V_cr 104.4 m/s linear, bracketed by railfe's runs at 99.19 (0.880 per cycle) and 109.64 m/s
+(1.117). See docs/data/vehicle_critical_speed.csv and docs/img/vehicle_critical_speed.png.
 
 Usage:
   vehicle_critical_speed.py linear                     eigenvalues only (seconds)
@@ -75,7 +79,10 @@ E_STAR = E / (2 * (1 - NU ** 2))
 DELTA = wk.DELTA                 # cone angle atan(1/40)
 CROWN = 0.3                      # rail crown radius (m)
 RAIL_Y = 0.75                    # crown tops and running points at y = +-0.75 m
-R_NOMINAL = 0.46                 # wheel radius at the running point (railfe's default)
+# The track's nominal rolling radius: the wheel radius at the running point, and the height of the
+# wheelset centres (and axle boxes) both in the linear model and in the railfe decks (railfe
+# refuses a vehicle whose Wheel radius differs from it).
+R_NOMINAL = 0.46
 GAUGE = 1.31884813001241
 N_BODIES = 7
 WHEELSET_BODIES = (3, 4, 5, 6)
@@ -241,6 +248,17 @@ class RailfeContact:
 
 
 # ---------------------------------------------------------------- the vehicle
+def full_matrices(p):
+    """vehicle_modes_fit.full_matrices(p) with the wheelset centres and axle boxes at R_NOMINAL
+    (vehicle_modes_fit places them at its WHEEL_RADIUS, the test car's 0.43 m)."""
+    saved = vm.WHEEL_RADIUS
+    vm.WHEEL_RADIUS = R_NOMINAL
+    try:
+        return vm.full_matrices(p)
+    finally:
+        vm.WHEEL_RADIUS = saved
+
+
 def parameters(**changes):
     p = vm.read_csv()
     p.update(changes)
@@ -256,7 +274,7 @@ def vehicle_system(p, V, model="railfe", yaw_damping=0.0, **options):
     """M, C, K of the vehicle on the rails at speed V, and the transformation T (q = T r) of the
     coordinates kept. yaw_damping: a rotational damper about z between car body and each bogie
     (N m s/rad), railfe's 'secondary_rotation' block."""
-    M, K, C = vm.full_matrices(p)
+    M, K, C = full_matrices(p)
     for bogie in (1, 2):
         i, j = 6 * bogie + RZ, RZ
         C[i, i] += yaw_damping
@@ -299,7 +317,7 @@ def lateral_modes(p, V, **kw):
     wheelsets let the vehicle's longitudinal modes at 1.02 and 1.25 Hz go almost undamped) are
     left out."""
     lam, vec, _ = eigen(p, V, **kw)
-    mass = np.diag(vm.full_matrices(p)[0])
+    mass = np.diag(full_matrices(p)[0])
     ok = (lam.imag > 0.5) & (np.abs(lam) < 2 * np.pi * 100)
     keep = []
     for i in np.flatnonzero(ok):
@@ -353,7 +371,7 @@ def critical_speed(p, lo=20.0, hi=200.0, **kw):
 def describe_mode(p, vec):
     """Kinetic-energy shares of the lateral-plane motions (y, roll, yaw) per body, and the
     wheelsets' amplitude and phase of y relative to wheelset 1."""
-    M = vm.full_matrices(p)[0]
+    M = full_matrices(p)[0]
     e = np.abs(vec) ** 2 * np.diag(M)
     e = e / e.sum()
     shares = e.reshape(N_BODIES, 6)
@@ -458,11 +476,10 @@ def simulate(railfe, p, V, work, yaw_damping=0.0, cycles=16, step=0.0005, bump=0
     frequency = frequency or 1.5
     passed = (14 + p["half_bogie_spacing"] + p["half_wheelbase"]) / V  # bump behind wheelset 4
     end = passed + cycles / frequency
-    # The wheelset centres at the track's nominal radius (0.46 m, the default), as railfe
-    # requires; the figures in docs/data/vehicle_critical_speed.csv come from runs made before
-    # that check, with the centres at 0.43 m (the linear model took the same heights).
+    # The wheelset centres at the track's nominal radius R_NOMINAL, as railfe requires and as the
+    # linear model (full_matrices) takes them.
     fields = dict(root=ROOT, speed="%.4f" % V, end="%.3f" % end, step=step, gauge=GAUGE,
-                  bump=bump, vehicle=vm.vehicle_deck_xml(p, wheel_radius=0.46,
+                  bump=bump, vehicle=vm.vehicle_deck_xml(p, wheel_radius=R_NOMINAL,
                                                           yaw_damping=yaw_damping))
     tag = "v%.3f_c%.0f" % (V, yaw_damping)
     deck = os.path.join(work, tag + ".xml")
@@ -493,7 +510,7 @@ def crossing(speeds, growth):
 # ---------------------------------------------------------------- reports
 def single_wheelset_check():
     """wickens_critical_speed's wheelset in the "railfe" contact model and its variants
-    (railfe's simulation: 80.442 m/s, docs/img/wickens_critical_speed.csv)."""
+    (railfe's simulation: 80.44 m/s, docs/img/wickens_critical_speed.csv)."""
     W = wk.MASS * GRAVITY + wk.AXLE_LOAD
     Ms = np.diag([wk.MASS] * 3 + [800.0, 100.0, wk.YAW_INERTIA])
     Ks = np.zeros((6, 6))
@@ -541,8 +558,10 @@ def linear_report(p):
                                             c["f22"], c["f23"], c["f33"]))
     sw = single_wheelset_check()
     print("single wheelset of wickens_critical_speed: railfe-kinematics model %.3f m/s (%.3f "
-          "without spin creep), its Wickens model (1 - kappa) %.3f, railfe's simulation 80.442"
-          % (sw[True], sw[False], wk.reference_critical_speed()))
+          "without spin creep); that script's 2-DOF reference (yaw creep x %.4f) %.3f, classical "
+          "Wickens %.3f; railfe's simulation 80.44" % (
+              sw[True], sw[False], wk.YAW_CREEP, wk.reference_critical_speed(),
+              wk.reference_critical_speed(yaw_creep=1.0)))
     Vc = {}
     for label, kw in (("railfe", dict(model="railfe")),
                       ("railfe, no spin creep", dict(model="railfe", spin=False)),
