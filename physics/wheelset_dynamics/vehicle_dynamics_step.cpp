@@ -48,6 +48,17 @@ StructureDeviationSettings deviation_settings(const Teuchos::ParameterList& step
   return settings;
 }
 
+// Whether the step list \p step (as the deck gives it) names sweep cases.
+bool is_sweep(const Teuchos::ParameterList& step) {
+  if (!step.isSublist("Sweep"))
+    return false;
+  const auto& sweep = step.sublist("Sweep");
+  for (const char* key : {"Speeds", "Spans", "Amplitudes"})
+    if (sweep.isParameter(key) && !sweep.get<Teuchos::Array<double>>(key).empty())
+      return true;
+  return false;
+}
+
 }  // namespace
 
 VehicleDynamicsStep::VehicleDynamicsStep(const Teuchos::ParameterList& parameters)
@@ -110,10 +121,18 @@ void VehicleDynamicsStep::check(const CheckContext& context) {
       throw_input_error(deck, context.path + "/Compare with step",
                         "'" + reference + "' is not a vehicle dynamics step before this one",
                         "the name of an earlier vehicle dynamics step of the deck");
+    if (is_sweep(steps.sublist(reference)))
+      throw_input_error(deck, context.path + "/Compare with step",
+                        "'" + reference + "' is a sweep, whose cases have histories of their own",
+                        "an earlier vehicle dynamics step without a Sweep");
   }
   const double start = p.get<double>("Start");
   const VehicleCase base{p.get<double>("Speed"), p.get<double>("End time"), deviation_settings(p)};
   cases_ = sweep_cases(p, base, deck, context.path);
+  if (!cases_.empty() && !reference.empty())
+    throw_input_error(deck, context.path + "/Compare with step",
+                      "is given with a Sweep, whose cases draw no chart of their own to compare",
+                      "no Compare with step in a sweep (its chart is <step>_sweep.png)");
   girders_.reset();
   const auto& structure = p.sublist("Structure");
   if (structure_is_girders(structure)) {
