@@ -194,6 +194,13 @@ ParameterSpec explicit_parameters() {
             "s", Range::non_negative());
   spec.text("Start from", "",
             "A previous statics step whose displacements start this one (preload), or ''.");
+  spec.real_array("Preload frame velocity", {},
+                  "With Start from: the velocity of the frame in which the preload is steady "
+                  "(a rolling wheel's axle, {V, 0, 0}); every node then starts with its initial "
+                  "velocity v plus grad(u) (v - this), the preload's deformation carried by the "
+                  "material through it. Empty: the preload starts with the initial velocities "
+                  "alone.",
+                  "m/s");
   ParameterSpec solid("The hex8 formulation (total-Lagrangian St. Venant-Kirchhoff).");
   solid.choice("Integration", "one point",
                {{"one point", "one point with hourglass control (fast)"},
@@ -483,6 +490,18 @@ ExplicitSettings read_explicit_settings(const Teuchos::ParameterList& step, cons
   settings.rayleigh_mass = step.get<double>("Rayleigh mass damping");
   settings.mass_scaling_step = step.get<double>("Mass scaling step");
   settings.start_from = step.get<std::string>("Start from");
+  const auto frame = step.get<Teuchos::Array<double>>("Preload frame velocity");
+  if (!frame.empty()) {
+    if (frame.size() != 3)
+      throw_input_error(deck, path + "/Preload frame velocity",
+                        "has " + std::to_string(frame.size()) + " entries",
+                        "three components (m/s), or none");
+    if (settings.start_from.empty())
+      throw_input_error(deck, path + "/Preload frame velocity",
+                        "is given without Start from, so there is no preload to convect",
+                        "a Start from statics step, or no Preload frame velocity");
+    settings.preload_frame = std::array<double, 3>{frame[0], frame[1], frame[2]};
+  }
   const auto& solid = step.sublist("Solid");
   settings.kernel.full_integration = solid.get<std::string>("Integration") == "full";
   const std::string hourglass = solid.get<std::string>("Hourglass control");

@@ -119,21 +119,23 @@ struct ElementHistorySpec {
 
 /// The settings of one explicit step.
 struct ExplicitSettings {
-  double end_time = 0;                    ///< s
-  double maximum_steps = 1e8;             ///< step budget (refused before, stopped during)
-  double time_step = 0;                   ///< fixed step (s); 0 = automatic
-  double safety_factor = 0.9;             ///< automatic step = factor × stable step
-  bool allow_unstable_step = false;       ///< run a fixed step above the stable limit
-  double energy_error_limit = 0.1;        ///< blow-up: |energy error| above it, and...
-  double energy_growth_limit = 100;       ///< ...stored + dissipated above this x the put in
-  double rayleigh_mass = 0;               ///< α of C = α M (1/s)
-  double mass_scaling_step = 0;           ///< elements below this step are made heavier (s); 0 off
-  SolidKernelSettings kernel;             ///< hex8 formulation
-  std::string start_from;                 ///< a previous step whose displacement starts this one
-  std::vector<TimedLoad> loads;           ///< nodal forces and surface loads
-  std::array<double, 3> gravity{};        ///< m/s²
-  std::string gravity_function = "1";     ///< f(t) scaling gravity
-  std::vector<PrescribedMotion> motions;  ///< prescribed kinematics
+  double end_time = 0;               ///< s
+  double maximum_steps = 1e8;        ///< step budget (refused before, stopped during)
+  double time_step = 0;              ///< fixed step (s); 0 = automatic
+  double safety_factor = 0.9;        ///< automatic step = factor × stable step
+  bool allow_unstable_step = false;  ///< run a fixed step above the stable limit
+  double energy_error_limit = 0.1;   ///< blow-up: |energy error| above it, and...
+  double energy_growth_limit = 100;  ///< ...stored + dissipated above this x the put in
+  double rayleigh_mass = 0;          ///< α of C = α M (1/s)
+  double mass_scaling_step = 0;      ///< elements below this step are made heavier (s); 0 off
+  SolidKernelSettings kernel;        ///< hex8 formulation
+  std::string start_from;            ///< a previous step whose displacement starts this one
+  /// The velocity of the frame in which the preload is steady (convected start); none: off.
+  std::optional<std::array<double, 3>> preload_frame;
+  std::vector<TimedLoad> loads;                       ///< nodal forces and surface loads
+  std::array<double, 3> gravity{};                    ///< m/s²
+  std::string gravity_function = "1";                 ///< f(t) scaling gravity
+  std::vector<PrescribedMotion> motions;              ///< prescribed kinematics
   std::vector<InitialVelocity> initial_velocities;    ///< initial velocity fields
   std::vector<NodalMass> nodal_masses;                ///< added nodal masses
   std::vector<RigidBodySpec> bodies;                  ///< rigid bodies and point masses

@@ -9,6 +9,7 @@
 #include "physics/common/contact_pairs.hpp"
 #include "physics/common/solid_assembly.hpp"
 #include "physics/elements/hex8.hpp"
+#include "physics/explicit/convected_start.hpp"
 #include "physics/explicit/ghost_exchange.hpp"
 #include "physics/explicit/lanczos.hpp"
 #include "physics/explicit/nodal_conditions.hpp"
@@ -247,6 +248,14 @@ void ExplicitSolver::initialise(const double* start) {
       for (int d = 0; d < 3; ++d)
         v_[3 * node + d] = initial.translation[d] + rotation[d];
     }
+  }
+  if (start && settings_.preload_frame) {
+    ghosts_->update_ghosts(u_.data(), v_.data());
+    std::vector<bool> skip(n_owned_);
+    for (LocalIndex node = 0; node < n_owned_; ++node)
+      skip[node] = discrete_->carried(node);
+    add_convected_velocity(elements_, u_.data(), *settings_.preload_frame, n_owned_, ghosts_.get(),
+                           skip, v_.data());
   }
   motions_->apply(0, 0, u_.data(), du_.data(), v_.data(), a_.data());
   NodalArrays nodes = arrays();

@@ -12,6 +12,7 @@ arc, the rail's solution zone and the time line always agree; edit this script, 
   make_squeal_decks.py                 # rewrite the shipped decks in inputs/scenes
   make_squeal_decks.py --check         # exit 1 if a shipped deck differs from what it would write
   make_squeal_decks.py --case 1 --zone-size 0.004 --output /tmp/case1_4mm.xml   # a study variant
+  make_squeal_decks.py --case 1 --scale demo --torque 0 --kinematics   # free rolling, creepage
 """
 import argparse
 import math
@@ -218,7 +219,9 @@ def deck(case, p, sleepers=True):
             p_("Arc element size", "double", p["arc_size"])]), 0),
         block("Node sets", "\n".join([
             block("all", p_("Box", "Array(double)", "{-1, 1, -1, 1, -1, 1}"), 0),
-            block("rim point", p_("Point", "Array(double)", fmt(rim)), 0)]), 0),
+            block("rim point", p_("Point", "Array(double)", fmt(rim)), 0)] + ([
+            block("rim behind", p_("Point", "Array(double)", fmt((-rim[0],) + rim[1:])), 0)]
+            if p.get("kinematics") else [])), 0),
         block("Side sets", block("rolling tread", p_("Box", "Array(double)", fmt(
             tread_box(arc))) + "\n" +
             p_("Within", "string", "tread"), 0), 0),
@@ -289,7 +292,22 @@ def deck(case, p, sleepers=True):
                                      ("axle z", "axle box", "z", None),
                                      ("axle spin", "axle box", "y", "angular velocity"),
                                      ("sprung z", "sprung mass", "z", None))]
+    if p.get("kinematics"):
+        # What the creepage is measured from: two rim points at axle height, ahead and behind
+        # (their velocities and where they are: the wheel's turning and its centre's speed),
+        # and the axle box's speed (the axle's far end, which lags the wheel as the axle bends).
+        histories += [block(n, p_(k, "string", s) + "\n" + p_("Component", "string", c) +
+                            "\n" + p_("Quantity", "string", q), 0)
+                      for n, k, s, c, q in (
+                          ("axle vx", "Body", "axle box", "x", "velocity"),
+                          ("rim ux", "Node set", "wheel.rim point", "x", "displacement"),
+                          ("rim behind vx", "Node set", "wheel.rim behind", "x", "velocity"),
+                          ("rim behind vz", "Node set", "wheel.rim behind", "z", "velocity"),
+                          ("rim behind ux", "Node set", "wheel.rim behind", "x", "displacement"))]
+    # The preload is steady in the axle's frame: its deformation starts moving with the rolling
+    # (the convected start), not at rest under a wheel that already rolls.
     roll = [p_("Module", "string", "explicit"), p_("Start from", "string", "preload"),
+            p_("Preload frame velocity", "Array(double)", fmt([SPEED, 0, 0])),
             p_("End time", "double", f"{p['end_time']:g}"),
             p_("Gravity", "Array(double)", "{0, 0, -9.81}")]
     if p["mass_scaling"]:
@@ -303,11 +321,12 @@ def deck(case, p, sleepers=True):
         block("Prescribed motion", ends(held_xy), 0),
         block("Discrete parts", "\n".join([
             block("Rigid bodies", "\n".join(bodies), 0),
-            block("Springs", "\n".join(springs), 0),
+            block("Springs", "\n".join(springs), 0)] + ([
             block("Moments", block("driving torque", "\n".join([
                 p_("Body", "string", "axle box"),
-                p_("Moment", "Array(double)", fmt([0, TORQUE, 0])),
-                p_("Function", "string", f"min(t / {p['ramp']:g}, 1)")]), 0), 0)]), 0),
+                p_("Moment", "Array(double)", fmt([0, p.get("torque", TORQUE), 0])),
+                p_("Function", "string", f"min(t / {p['ramp']:g}, 1)")]), 0), 0)]
+            if p.get("torque", TORQUE) else [])), 0),
         block("Contact pairs", block("wheel-rail", "\n".join([
             contact_common, p_("Damping fraction", "double", "0.1"), friction(case),
             p_("Patch times", "Array(double)", fmt(
@@ -351,7 +370,7 @@ def header(case, p, seats, zone, arc, motion):
   the rolling speed (pad and ballast in series), the wheel pressed into the rail
   (frictionless): wheel load 111 kN. Only the tread faces of the refined arc are searched.
   Step "roll": explicit from the preload, wheel at 100 km/h and omega = V / {ROLLING_RADIUS} m;
-  driving torque {TORQUE / 1e3:g} kN m ramped over {p['ramp'] * 1e3:g} ms (traction coefficient about 0.27);
+  {torque_text(p)};
   {lateral}; {law}; {p['end_time'] * 1e3:g} ms.
   Run:      railfe inputs/scenes/{name}.xml      (mpirun -np 2 ... for two ranks)
   Look at:  roll_contact_wheel-rail.csv (forces), roll_contact_wheel-rail_patch_*.png (patches),
@@ -359,6 +378,16 @@ def header(case, p, seats, zone, arc, motion):
   Charts:   python3 regression/charts/contact_force_history.py DIR/roll_contact_wheel-rail.csv
 -->
 """
+
+
+def torque_text(p):
+    torque = p.get("torque", TORQUE)
+    if not torque:
+        return "no driving torque (free rolling)"
+    if torque == TORQUE:
+        return (f"driving torque {TORQUE / 1e3:g} kN m ramped over {p['ramp'] * 1e3:g} ms "
+                f"(traction coefficient about 0.27)")
+    return f"driving torque {torque / 1e3:g} kN m ramped over {p['ramp'] * 1e3:g} ms"
 
 
 def modes_text(p):
@@ -389,13 +418,19 @@ def main():
     parser.add_argument("--sleepers", choices=("springs", "bodies"))
     parser.add_argument("--modes", action="store_true", default=None,
                         help="add the wheel's modal step (the full-scale decks have it)")
+    parser.add_argument("--kinematics", action="store_true", default=None,
+                        help="also record a second rim point, behind the axle, the rim points' "
+                             "displacements along x and the axle box's speed (the creepage is "
+                             "measured from them)")
+    parser.add_argument("--torque", type=float,
+                        help="driving torque (N m; 0: none, free rolling)")
     for key in ("zone_size", "head_size", "tread_size", "arc_size", "rail_length", "end_time",
                 "mass_scaling", "start_x"):
         parser.add_argument("--" + key.replace("_", "-"), type=float)
     args = parser.parse_args()
     if args.case:
         p = dict(FULL if args.scale == "full" else DEMO)
-        for key in list(p) + ["sleepers", "modes"]:
+        for key in list(p) + ["sleepers", "modes", "torque", "kinematics"]:
             value = getattr(args, key, None)
             if value is not None:
                 p[key] = value
