@@ -49,7 +49,7 @@ def main():
             ax.set_xlabel("speed (km/h)")
             ax.grid(alpha=0.3)
     axes[0].axhline(0.8, color="k", lw=0.8, ls=":")
-    axes[0].text(axes[0].get_xlim()[0], 0.81, " Y/Q 0.8 (JIS limit, 2 m mean dashed)",
+    axes[0].text(axes[0].get_xlim()[0], 0.81, " Y/Q 0.8, a common limit (2 m mean dashed)",
                  fontsize=8)
     axes[1].axhline(0.6, color="k", lw=0.8, ls=":")
     handles, labels = [], []
