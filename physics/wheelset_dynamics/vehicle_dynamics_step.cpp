@@ -171,6 +171,17 @@ void VehicleDynamicsStep::check(const CheckContext& context) {
 
 void VehicleDynamicsStep::run(StepContext& context) {
   const auto& p = *parameters_;
+  if (girders_ && p.get<double>("Alpha") > -0.05) {
+    // Trapezoidal-like steps put no damping on the Nyquist ringing of the moving ties to the
+    // girder: Newton needs more iterations step by step until it fails (docs/verification.md).
+    const std::string warning =
+        "HHT alpha " + CsvWriter::format(p.get<double>("Alpha")) +
+        " over girders: the moving ties to the girder ring at the step's Nyquist frequency "
+        "without numerical damping (Newton slows, then may fail); -0.1 damps it";
+    context.summary.add("Step " + context.step_name + " (vehicle dynamics)", "warning", warning);
+    if (context.model.comm().is_root())
+      std::cerr << "warning: " << context.path << ": " << warning << "\n";
+  }
   if (cases_.empty()) {
     const VehicleCase base{p.get<double>("Speed"), p.get<double>("End time"),
                            deviation_settings(p)};
@@ -234,17 +245,6 @@ CaseOutcome VehicleDynamicsStep::run_case(StepContext& context, const VehicleCas
     railed.push_back({mesh.node(wheelsets_[w])[0], system.wheelset(w).unknowns().nodes});
   std::unique_ptr<ConstraintSet> rails;
   BeamRails* beam_rails = nullptr;
-  if (structure && p.get<double>("Alpha") > -0.05) {
-    // Trapezoidal-like steps put no damping on the Nyquist ringing of the moving ties to the
-    // girder: Newton needs more iterations step by step until it fails (docs/verification.md).
-    const std::string warning =
-        "HHT alpha " + CsvWriter::format(p.get<double>("Alpha")) +
-        " over girders: the moving ties to the girder ring at the step's Nyquist frequency "
-        "without numerical damping (Newton slows, then may fail); -0.1 damps it";
-    context.summary.add(section, "warning", warning);
-    if (writes && alone)
-      std::cerr << "warning: " << context.path << ": " << warning << "\n";
-  }
   if (structure) {
     auto ties = std::make_unique<BeamRails>(structure->girders(), offset, lateral, vertical, start,
                                             V, railed);

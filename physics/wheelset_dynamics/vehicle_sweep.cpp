@@ -113,9 +113,10 @@ void run_sweep(StepContext& context, const std::vector<VehicleCase>& cases, cons
       continue;
     const VehicleCase& c = cases[i];
     const std::string name = context.step_name + "_case" + std::to_string(i + 1);
+    const std::string path = context.path + ", case " + std::to_string(i + 1);
     RunSummary summary;
-    StepContext case_context{context.model,  name,    context.path, context.parameters,
-                             context.output, summary, true,         context.progress_interval};
+    StepContext case_context{context.model,  name,    path, context.parameters,
+                             context.output, summary, true, context.progress_interval};
     const std::size_t registered = context.output.names().size();
     const auto case_start = std::chrono::steady_clock::now();
     CaseOutcome outcome;
@@ -139,7 +140,7 @@ void run_sweep(StepContext& context, const std::vector<VehicleCase>& cases, cons
     row[kColumns - 2] = wall;
     row[kColumns - 1] = comm.rank();
     if (!outcome.message.empty())
-      messages.push_back("case " + std::to_string(i + 1) + ": " + outcome.message);
+      messages.push_back(outcome.message);  // it names the step and the case
     if (!context.quiet) {
       std::ostringstream line;
       line << "[" << context.step_name << ": sweep] case " << i + 1 << " of " << n << " (V "
@@ -183,7 +184,7 @@ void run_sweep(StepContext& context, const std::vector<VehicleCase>& cases, cons
   }
   if (comm.is_root())
     for (const std::string& message : all_messages)
-      std::cerr << "warning: " << context.path << ": " << message << "\n";
+      std::cerr << "warning: " << message << "\n";
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - sweep_start).count();
   double case_time = 0;
