@@ -48,6 +48,7 @@ ContactNewtonReport solve_with_contact(const Teuchos::RCP<TpetraMatrix>& K, cons
   history.precision(3);
   double setup_seconds = 0, solve_seconds = 0;
   TpetraVector f_contact = contact_forces(contact, x, u);
+  TpetraVector previous(u.getMap());
   for (int iteration = 1; iteration <= max_iterations; ++iteration) {
     const ContactLinearization linear = linearize_contact(contact, dofs);
     const auto tangent = Tpetra::MatrixMatrix::add(1.0, false, *K, 1.0, false, *linear.stiffness);
@@ -55,6 +56,7 @@ ContactNewtonReport solve_with_contact(const Teuchos::RCP<TpetraMatrix>& K, cons
     rhs.update(1.0, *linear.force, 1.0);
     const auto system = constraints.apply(tangent, rhs);
     solver.setup(system, traits);
+    previous.assign(u);
     report.solve = solver.solve(rhs, u);
     setup_seconds += report.solve.setup_seconds;
     solve_seconds += report.solve.solve_seconds;
@@ -64,6 +66,15 @@ ContactNewtonReport solve_with_contact(const Teuchos::RCP<TpetraMatrix>& K, cons
     // Out of balance at the new state with the exact contact force: K u − f − f_c(u), less the
     // reactions at the prescribed DOFs.
     f_contact = contact_forces(contact, x, u);
+    // A step that lifts every contact off (many overlapping penalty springs pushing at once on
+    // a fine mesh) leaves the next linearisation nothing to hold the bodies with, and the
+    // iterations never come back: shorten it until some contact remains.
+    for (int halving = 0; linear.active > 0 && halving < 20 && !(f_contact.norm2() > 0);
+         ++halving) {
+      u.update(0.5, previous, 0.5);
+      f_contact = contact_forces(contact, x, u);
+      ++report.shortened_steps;
+    }
     TpetraVector residual(u.getMap());
     K->apply(u, residual);
     residual.update(-1.0, f, -1.0, f_contact, 1.0);

@@ -24,6 +24,7 @@ struct ContactNewtonReport {
   double residual = 0;       ///< out-of-balance force on free DOFs over the force scale
   long long active = 0;      ///< active slave nodes at the end
   double contact_force = 0;  ///< 2-norm of the contact forces at the end (N)
+  int shortened_steps = 0;   ///< halvings of steps that lifted every contact off
   SolveReport solve;         ///< the last linear solve; setup and solve seconds summed
 };
 

@@ -264,6 +264,9 @@ void StaticsStep::run(StepContext& context) {
     summary.add(section, "contact iterations", newton.iterations);
     summary.add(section, "contact out-of-balance force (relative)", newton.residual);
     summary.add(section, "active slave nodes", static_cast<double>(newton.active));
+    if (newton.shortened_steps > 0)
+      summary.add(section, "contact steps halved (they lifted every contact off)",
+                  newton.shortened_steps);
   }
   summary.add(section, "equilibrium error |applied + reactions| / max",
               scale > 0 ? std::sqrt(imbalance) / scale : 0.0);
