@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -16,6 +17,19 @@ constexpr TrackSide kContactSide[n_wheelset_contacts] = {TrackSide::right, Track
                                                          TrackSide::left, TrackSide::left};
 
 }  // namespace
+
+std::array<double, 2> rail_top(const WheelRailGeometry& geometry, TrackSide side) {
+  const ProfileCurve& rail = geometry.rail(side);
+  std::array<double, 2> top{0, std::numeric_limits<double>::infinity()};
+  const int n = 2000;
+  for (int i = 0; i <= n; ++i) {
+    const double s = rail.begin() + (rail.end() - rail.begin()) * i / n;
+    const Vec2 point = rail.at(s).p;
+    if (point.z < top[1])
+      top = {point.y, point.z};
+  }
+  return top;
+}
 
 RailBeams::RailBeams(const RailBeamLayout& layout, std::array<double, 2> axis_y,
                      std::array<double, 2> axis_z)

@@ -48,6 +48,10 @@ struct RailSpringLayout {
   double axis_depth = 0;              ///< the roll axis below the rail's top (m)
 };
 
+/// The top of \p side's rail profile in the track's cross-section: {y, z} of its smallest z
+/// (where the rails' beam and girder axes are measured from).
+std::array<double, 2> rail_top(const WheelRailGeometry& geometry, TrackSide side);
+
 /// A structure under the track: a girder continuous over its spans (the rails run over the piers
 /// without a step or kink), on bearings at each pier between two spans, a spring–damper to the
 /// ground along x, y, z and about x, its ends held by the abutments along x, y, z and in roll;

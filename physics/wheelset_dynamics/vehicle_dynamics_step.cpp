@@ -48,17 +48,6 @@ StructureDeviationSettings deviation_settings(const Teuchos::ParameterList& step
   return settings;
 }
 
-// Whether the step list \p step (as the deck gives it) names sweep cases.
-bool is_sweep(const Teuchos::ParameterList& step) {
-  if (!step.isSublist("Sweep"))
-    return false;
-  const auto& sweep = step.sublist("Sweep");
-  for (const char* key : {"Speeds", "Spans", "Amplitudes"})
-    if (sweep.isParameter(key) && !sweep.get<Teuchos::Array<double>>(key).empty())
-      return true;
-  return false;
-}
-
 }  // namespace
 
 VehicleDynamicsStep::VehicleDynamicsStep(const Teuchos::ParameterList& parameters)
@@ -121,7 +110,7 @@ void VehicleDynamicsStep::check(const CheckContext& context) {
       throw_input_error(deck, context.path + "/Compare with step",
                         "'" + reference + "' is not a vehicle dynamics step before this one",
                         "the name of an earlier vehicle dynamics step of the deck");
-    if (is_sweep(steps.sublist(reference)))
+    if (names_sweep_cases(steps.sublist(reference)))
       throw_input_error(deck, context.path + "/Compare with step",
                         "'" + reference + "' is a sweep, whose cases have histories of their own",
                         "an earlier vehicle dynamics step without a Sweep");
@@ -335,14 +324,9 @@ CaseOutcome VehicleDynamicsStep::run_case(StepContext& context, const VehicleCas
     girder_recorder = std::make_unique<GirderRecorder>(context, *structure, writes);
   const double interval = p.get<double>("History interval");
   const long n_steps = std::lround(std::ceil(end / dt - 1e-9));
-  std::vector<double> vehicle_u(uv.size()), vehicle_v(uv.size()), vehicle_a(uv.size());
   const auto record = [&](double time, int iterations, bool row) {
-    for (std::size_t i = 0; i < uv.size(); ++i) {
-      vehicle_u[i] = u[offset + i];
-      vehicle_v[i] = v[offset + i];
-      vehicle_a[i] = a[offset + i];
-    }
-    recorder.record(time, iterations, vehicle_u, vehicle_v, vehicle_a, states, row);
+    recorder.record(time, iterations, vehicle_part(u), vehicle_part(v), vehicle_part(a), states,
+                    row);
     if (girder_recorder)
       girder_recorder->record(time, u.data(), row);
   };

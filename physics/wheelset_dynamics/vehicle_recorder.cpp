@@ -43,18 +43,18 @@ VehicleRecorder::VehicleRecorder(StepContext& context, VehicleSystem& system,
                                  std::vector<Eigen::MatrixXd> point_motion,
                                  std::vector<std::array<double, 2>> static_loads, bool writes)
     : system_(system),
-      root_(writes),
+      writes_(writes),
       point_names_(std::move(point_names)),
       point_motion_(std::move(point_motion)),
       static_loads_(std::move(static_loads)),
       wheelsets_(context.output.staging_path(context.step_name + "_wheelsets.csv"),
-                 wheelset_columns(system.n_wheelsets()), root_),
+                 wheelset_columns(system.n_wheelsets()), writes_),
       wheels_(context.output.staging_path(context.step_name + "_wheels.csv"),
-              wheel_columns(system.n_wheelsets()), root_),
+              wheel_columns(system.n_wheelsets()), writes_),
       points_(context.output.staging_path(context.step_name + "_points.csv"),
-              point_columns(point_names_), root_),
+              point_columns(point_names_), writes_),
       events_(context.output.staging_path(context.step_name + "_contact_events.csv"),
-              {"time_s", "wheelset", "contact", "event", "N_N"}, root_),
+              {"time_s", "wheelset", "contact", "event", "N_N"}, writes_),
       impacts_path_(context.output.staging_path(context.step_name + "_flange_impacts.csv")),
       safety_path_(context.output.staging_path(context.step_name + "_safety.csv")),
       comfort_path_(context.output.staging_path(context.step_name + "_comfort.csv")),
@@ -70,8 +70,7 @@ void VehicleRecorder::set_sliding_mean(int samples, double length) {
 }
 
 void VehicleRecorder::record(
-    double time, int iterations, const std::vector<double>& u, const std::vector<double>& v,
-    const std::vector<double>& a,
+    double time, int iterations, const double* u, const double* v, const double* a,
     const std::vector<std::array<ContactState, n_wheelset_contacts>>& states, bool write_row) {
   const int n = system_.n_wheelsets();
   const bool first = samples_ == 0;
@@ -125,7 +124,7 @@ void VehicleRecorder::record(
     }
   }
   const Eigen::Index n_model = system_.n_model_unknowns();
-  const Eigen::Map<const Eigen::VectorXd> uu(u.data(), n_model), aa(a.data(), n_model);
+  const Eigen::Map<const Eigen::VectorXd> uu(u, n_model), aa(a, n_model);
   std::vector<double> point_row{time};
   for (std::size_t p = 0; p < point_motion_.size(); ++p) {
     const Eigen::VectorXd du = point_motion_[p] * uu, ddu = point_motion_[p] * aa;
@@ -162,7 +161,7 @@ void VehicleRecorder::finish(double, RunSummary& summary, const std::string& sec
     CsvWriter file(
         impacts_path_,
         {"wheelset", "wheel", "start_s", "end_s", "peak_flange_N_N", "peak_Y_N", "peak_Y_over_Q"},
-        root_);
+        writes_);
     for (const Impact& i : impacts_)
       file.write_row({std::to_string(i.wheelset + 1), kSides[i.side], CsvWriter::format(i.start),
                       CsvWriter::format(i.end), CsvWriter::format(i.peak_flange),
@@ -173,7 +172,7 @@ void VehicleRecorder::finish(double, RunSummary& summary, const std::string& sec
     CsvWriter file(safety_path_,
                    {"wheelset", "wheel", "static_Q_N", "peak_Y_N", "peak_Y_over_Q",
                     "peak_Y_over_Q_sliding_mean", "peak_unloading_dQ_over_Q"},
-                   root_);
+                   writes_);
     for (int w = 0; w < system_.n_wheelsets(); ++w)
       for (int side = 0; side < 2; ++side) {
         const WheelPeaks& p = peaks_[w][side];
@@ -188,7 +187,7 @@ void VehicleRecorder::finish(double, RunSummary& summary, const std::string& sec
       }
   }
   {
-    CsvWriter file(comfort_path_, {"point", "peak_ay_m_per_s2", "rms_ay_m_per_s2"}, root_);
+    CsvWriter file(comfort_path_, {"point", "peak_ay_m_per_s2", "rms_ay_m_per_s2"}, writes_);
     for (std::size_t p = 0; p < point_names_.size(); ++p) {
       const double rms = std::sqrt(sum_ay2_[p] / std::max<std::size_t>(samples_, 1));
       file.write_row({point_names_[p], CsvWriter::format(peak_ay_[p]), CsvWriter::format(rms)});

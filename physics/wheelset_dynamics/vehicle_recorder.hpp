@@ -31,10 +31,10 @@ class VehicleRecorder {
   /// Also reports each wheel's Y/Q as a sliding mean over the last \p samples calls of
   /// record(), spanning \p length metres of track (UIC 518 takes 2 m); 1 sample: none.
   void set_sliding_mean(int samples, double length);
-  /// Takes the converged state at \p time (\p iterations Newton iterations): events, impacts and
-  /// peaks every step, a history row when \p write_row.
-  void record(double time, int iterations, const std::vector<double>& u,
-              const std::vector<double>& v, const std::vector<double>& a,
+  /// Takes the converged state at \p time (\p iterations Newton iterations; \p u, \p v, \p a
+  /// the vehicle's unknowns): events, impacts and peaks every step, a history row when
+  /// \p write_row.
+  void record(double time, int iterations, const double* u, const double* v, const double* a,
               const std::vector<std::array<ContactState, n_wheelset_contacts>>& states,
               bool write_row);
   /// Closes open impacts at \p time, writes the impacts and the safety table, adds the figures
@@ -53,7 +53,7 @@ class VehicleRecorder {
   };
 
   VehicleSystem& system_;
-  bool root_;
+  bool writes_;
   std::vector<std::string> point_names_;
   std::vector<Eigen::MatrixXd> point_motion_;
   std::vector<std::array<double, 2>> static_loads_;

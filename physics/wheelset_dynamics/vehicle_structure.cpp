@@ -130,14 +130,8 @@ void check_deviation_on_girders(const GirderLayout& layout,
 VehicleStructure::VehicleStructure(const GirderLayout& layout, const WheelRailGeometry& geometry,
                                    VehicleSystem& vehicle)
     : layout_(layout) {
-  // The rails' top: the smallest z of both rail profiles in the cross-section.
-  double top = std::numeric_limits<double>::infinity();
-  for (TrackSide side : {TrackSide::right, TrackSide::left}) {
-    const ProfileCurve& rail = geometry.rail(side);
-    const int n = 2000;
-    for (int i = 0; i <= n; ++i)
-      top = std::min(top, rail.at(rail.begin() + (rail.end() - rail.begin()) * i / n).p.z);
-  }
+  const double top =
+      std::min(rail_top(geometry, TrackSide::right)[1], rail_top(geometry, TrackSide::left)[1]);
   girders_ = std::make_unique<RailBeams>(layout, top + layout.axis_depth);
   structure_ = std::make_unique<SparseLinearSystem>(girders_->mass(), girders_->damping(),
                                                     girders_->stiffness());

@@ -27,6 +27,16 @@ ParameterSpec vehicle_sweep_parameters() {
   return spec;
 }
 
+bool names_sweep_cases(const Teuchos::ParameterList& step) {
+  if (!step.isSublist("Sweep"))
+    return false;
+  const auto& sweep = step.sublist("Sweep");
+  for (const char* key : {"Speeds", "Spans", "Amplitudes"})
+    if (sweep.isParameter(key) && !sweep.get<Teuchos::Array<double>>(key).empty())
+      return true;
+  return false;
+}
+
 std::vector<VehicleCase> sweep_cases(const Teuchos::ParameterList& step, const VehicleCase& base,
                                      const std::string& source, const std::string& path) {
   const auto& sweep = step.sublist("Sweep");
@@ -38,7 +48,7 @@ std::vector<VehicleCase> sweep_cases(const Teuchos::ParameterList& step, const V
   const auto given = [&](const char* key) {
     return !sweep.get<Teuchos::Array<double>>(key).empty();
   };
-  if (!given("Speeds") && !given("Spans") && !given("Amplitudes"))
+  if (!names_sweep_cases(step))
     return {};
   for (const char* key : {"Spans", "Amplitudes"})
     if (given(key) && base.deviation.shape == DeviationShape::none)

@@ -36,6 +36,9 @@ struct CaseOutcome {
 /// The Sweep list's valid parameters.
 ParameterSpec vehicle_sweep_parameters();
 
+/// Whether the step list \p step (validated or as the deck gives it) names sweep cases.
+bool names_sweep_cases(const Teuchos::ParameterList& step);
+
 /// The cases of the Sweep list of \p step, every combination of its lists, each missing list
 /// taking \p base's value; each case runs over the track length of \p base (End time × Speed).
 /// Empty when the list names nothing. Throws an input error (deck \p source, list \p path) for

@@ -187,24 +187,6 @@ RailBeamLayout rail_beam_layout(const Teuchos::ParameterList& rails, const std::
   return layout;
 }
 
-namespace {
-
-// The top of \p side's rail profile in the cross-section: {y, z} of its smallest z.
-std::array<double, 2> rail_top(const WheelRailGeometry& geometry, TrackSide side) {
-  const ProfileCurve& rail = geometry.rail(side);
-  std::array<double, 2> top{0, std::numeric_limits<double>::infinity()};
-  const int n = 2000;
-  for (int i = 0; i <= n; ++i) {
-    const double s = rail.begin() + (rail.end() - rail.begin()) * i / n;
-    const Vec2 point = rail.at(s).p;
-    if (point.z < top[1])
-      top = {point.y, point.z};
-  }
-  return top;
-}
-
-}  // namespace
-
 WheelsetTrack::WheelsetTrack(const Teuchos::ParameterList& rails, const std::string& source,
                              const std::string& path, const WheelRailGeometry& geometry,
                              WheelsetSystem& wheelset, std::function<double(double)> lateral,
