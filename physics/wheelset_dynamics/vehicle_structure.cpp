@@ -83,8 +83,16 @@ std::array<double, N> entries(const Teuchos::ParameterList& list, const char* ke
 
 }  // namespace
 
-GirderLayout girder_layout(const Teuchos::ParameterList& structure, const std::string&,
-                           const std::string&) {
+GirderLayout girder_layout(const Teuchos::ParameterList& structure, const std::string& source,
+                           const std::string& path) {
+  // One span has no pier: bearings given for it would be ignored.
+  if (structure.get<int>("Spans") == 1)
+    for (const char* key : {"Bearing stiffness", "Bearing damping"})
+      if (!structure.getEntry(key).isDefault())
+        throw_input_error(source, path + "/" + key,
+                          "is given for a single span, which has no pier to put it on (the "
+                          "abutments hold the girder's ends)",
+                          "Spans of 2 or more, or no bearings");
   GirderLayout layout;
   const double area = structure.get<double>("Area");
   layout.material = isotropic_beam_material(structure.get<double>("Young's modulus"),

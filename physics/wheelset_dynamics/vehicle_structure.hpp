@@ -30,7 +30,8 @@ ParameterSpec vehicle_structure_parameters();
 /// Whether the Structure list \p structure asks for girders.
 bool structure_is_girders(const Teuchos::ParameterList& structure);
 
-/// The girders of a Structure list whose Model is "girders".
+/// The girders of a Structure list whose Model is "girders". Throws an input error naming the
+/// deck \p source and the list's \p path for bearings given to a single span (no pier).
 GirderLayout girder_layout(const Teuchos::ParameterList& structure, const std::string& source,
                            const std::string& path);
 
