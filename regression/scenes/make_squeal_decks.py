@@ -266,10 +266,7 @@ def deck(case, p, sleepers=True):
             p_("Axis point", "Array(double)", fmt([x0, 0, AXIS_HEIGHT]))]), 0), 0),
         block("Springs", static_springs, 0),
         block("Contact pairs", block("wheel-rail", contact_common, 0), 0)])
-    # --hold-speed: the axle box moves along at the rolling speed (the creep force, not the
-    # wheel's forward acceleration, then balances the torque); its start velocity is the rate.
     axle_box = [p_("Node set", "string", "wheel.axle_end"),
-                p_("Motion x", "string", f"{SPEED:.9g}*t") if p.get("hold_speed") else
                 p_("Velocity", "Array(double)", fmt([SPEED, 0, 0])),
                 p_("Angular velocity", "Array(double)", fmt([0, omega, 0])),
                 p_("Fixed rotations", "string", "xz")]
@@ -355,8 +352,6 @@ def header(case, p, seats, zone, arc, motion):
                f"{LATERAL_CREEPAGE[case] * SPEED * 1e3:.4g} mm/s (rigid lateral creepage "
                f"{LATERAL_CREEPAGE[case] * 100:g} %)" if motion else
                "the axle box held sideways")
-    if p.get("hold_speed"):
-        lateral += " and moved along at the rolling speed"
     name = "squeal_demo" if p is DEMO else f"squeal_case{case}"
     return f"""<!--
   Squeal rolling scene (Yang & Li 2019), case {case}: {what}, {law}. {p['title'].capitalize()}.
@@ -429,10 +424,6 @@ def main():
                              "measured from them)")
     parser.add_argument("--torque", type=float,
                         help="driving torque (N m; 0: none, free rolling)")
-    parser.add_argument("--hold-speed", action="store_true", default=None,
-                        help="move the axle box along at the rolling speed (Motion x) instead "
-                             "of starting it there: the wheel cannot speed up, so the creep "
-                             "force balances the torque")
     parser.add_argument("--zone-end", type=float,
                         help="the rail's solution zone ends this far ahead of the wheel's start "
                              "(m; the refined arc follows; demo 0.05, full 0.54)")
@@ -444,7 +435,7 @@ def main():
     args = parser.parse_args()
     if args.case:
         p = dict(FULL if args.scale == "full" else DEMO)
-        for key in list(p) + ["sleepers", "modes", "torque", "kinematics", "hold_speed"]:
+        for key in list(p) + ["sleepers", "modes", "torque", "kinematics"]:
             value = getattr(args, key, None)
             if value is not None:
                 p[key] = value
