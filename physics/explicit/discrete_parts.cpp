@@ -1,9 +1,12 @@
 #include "physics/explicit/discrete_parts.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <string>
 
 #include "framework/base/error.hpp"
+#include "framework/mesh/nearest_nodes.hpp"
 #include "framework/mesh/partition.hpp"
 #include "physics/explicit/nodal_conditions.hpp"
 
@@ -20,12 +23,38 @@ Eigen::Vector3d vector_of(const std::array<double, 3>& values) {
 constexpr std::size_t kOldStateSize = 8 * 3 + 9 + 1;
 constexpr std::size_t kStateSize = kOldStateSize + 6;
 
+// The largest 1/m_a + n_b/m_b over the pairs of a spring between node sets, n_b the springs
+// that meet at node b: a node b with n_b equal springs from nodes a has the pairs' frequency
+// ω² = k (1/m_a + n_b/m_b). The nodes' masses may live on other ranks: summed from their owners.
+double paired_inverse_mass(const MeshPartition& partition, const std::vector<double>& nodal_mass,
+                           const std::vector<std::pair<GlobalIndex, GlobalIndex>>& pairs) {
+  std::vector<double> masses(2 * pairs.size(), 0.0);
+  for (std::size_t p = 0; p < pairs.size(); ++p) {
+    for (int end = 0; end < 2; ++end) {
+      const LocalIndex local = partition.local_node(end == 0 ? pairs[p].first : pairs[p].second);
+      if (local >= 0 && local < partition.n_owned_nodes())
+        masses[2 * p + end] = nodal_mass[local];
+    }
+  }
+  partition.comm().sum_in_place(masses);
+  std::map<GlobalIndex, int> springs_at;
+  for (const auto& pair : pairs)
+    ++springs_at[pair.second];
+  double largest = 0;
+  for (std::size_t p = 0; p < pairs.size(); ++p)
+    largest =
+        std::max(largest, 1 / masses[2 * p] + springs_at[pairs[p].second] / masses[2 * p + 1]);
+  return largest;
+}
+
 }  // namespace
 
 DiscreteParts::DiscreteParts(const ExplicitSettings& settings, const MeshPartition& partition,
                              const std::vector<double>& nodal_mass, const std::string& deck,
                              const std::string& path)
-    : body_of_node_(partition.n_owned_nodes(), -1), moments_(settings.moments) {
+    : comm_(partition.comm()),
+      body_of_node_(partition.n_owned_nodes(), -1),
+      moments_(settings.moments) {
   const Communicator& comm = partition.comm();
   for (const RigidBodySpec& spec : settings.bodies) {
     const std::string where = path + "/Rigid bodies/" + spec.name;
@@ -132,10 +161,10 @@ DiscreteParts::DiscreteParts(const ExplicitSettings& settings, const MeshPartiti
     spring.b = make_end(spec.end_b);
     if (spring.a.body >= 0 && spring.b.share > 0)
       std::swap(spring.a, spring.b);
+    std::vector<std::pair<GlobalIndex, GlobalIndex>> pairs;  // between two node sets
     if (spring.a.share > 0 && spring.b.share > 0)
-      throw_input_error(deck, path + "/Springs/" + spec.name,
-                        "joins two node sets, which railfe does not pair",
-                        "a node set and a rigid body or 'ground', or two rigid bodies");
+      pairs = nearest_node_pairs(partition, spec.end_a, spec.end_b, deck,
+                                 path + "/Springs/" + spec.name + "/End B");
     // Critical step of the spring on the masses it joins (central difference with damping).
     auto end_mass = [&](const SpringEnd& end) {
       if (end.body >= 0)
@@ -153,7 +182,10 @@ DiscreteParts::DiscreteParts(const ExplicitSettings& settings, const MeshPartiti
       spring.element.stiffness[d] = share * spec.stiffness[d];
       spring.element.damping[d] = share * spec.damping[d];
     }
-    const double inverse_mass = 1 / end_mass(spring.a) + 1 / end_mass(spring.b);
+    double inverse_mass = 1 / end_mass(spring.a) + 1 / end_mass(spring.b);
+    if (!pairs.empty())
+      inverse_mass = paired_inverse_mass(partition, nodal_mass, pairs);
+    spring.pairs = std::move(pairs);
     for (int d = 0; d < 3; ++d) {
       const double k = spring.element.stiffness[d], c = spring.element.damping[d];
       if (k <= 0)
@@ -164,6 +196,7 @@ DiscreteParts::DiscreteParts(const ExplicitSettings& settings, const MeshPartiti
     }
     springs_.push_back(std::move(spring));
   }
+  number_gathered_nodes(partition);
   const Eigen::Vector3d zero = Eigen::Vector3d::Zero();
   previous_own_force_.assign(bodies_.size(), zero);
   previous_own_moment_.assign(bodies_.size(), zero);
@@ -228,9 +261,73 @@ void DiscreteParts::predict(double dt, NodalArrays& nodes) {
   }
 }
 
+void DiscreteParts::number_gathered_nodes(const MeshPartition& partition) {
+  for (const Spring& spring : springs_)
+    for (const auto& [a, b] : spring.pairs)
+      gathered_nodes_.insert(gathered_nodes_.end(), {a, b});
+  std::sort(gathered_nodes_.begin(), gathered_nodes_.end());
+  gathered_nodes_.erase(std::unique(gathered_nodes_.begin(), gathered_nodes_.end()),
+                        gathered_nodes_.end());
+  for (GlobalIndex node : gathered_nodes_) {
+    const LocalIndex local = partition.local_node(node);
+    gathered_owned_.push_back(local >= 0 && local < partition.n_owned_nodes() ? local : -1);
+  }
+  auto slot = [&](GlobalIndex node) {
+    return static_cast<int>(std::lower_bound(gathered_nodes_.begin(), gathered_nodes_.end(), node) -
+                            gathered_nodes_.begin());
+  };
+  for (Spring& spring : springs_)
+    for (const auto& [a, b] : spring.pairs)
+      spring.pair_slots.push_back({slot(a), slot(b)});
+  gathered_.assign(6 * gathered_nodes_.size(), 0.0);
+}
+
+void DiscreteParts::gather_paired_motion(const NodalArrays& nodes) {
+  std::fill(gathered_.begin(), gathered_.end(), 0.0);
+  for (std::size_t i = 0; i < gathered_nodes_.size(); ++i) {
+    const LocalIndex node = gathered_owned_[i];
+    if (node < 0)
+      continue;
+    for (int d = 0; d < 3; ++d) {
+      gathered_[6 * i + d] = nodes.u[3 * node + d];
+      gathered_[6 * i + 3 + d] = nodes.v[3 * node + d];
+    }
+  }
+  if (comm_.n_ranks() > 1)
+    comm_.sum_in_place(gathered_);
+}
+
+double DiscreteParts::add_paired_spring_forces(const Spring& spring, const NodalArrays& nodes,
+                                               double& energy) {
+  double power = 0;
+  for (const auto& [a, b] : spring.pair_slots) {
+    const Eigen::Map<const Eigen::Vector3d> u_a(&gathered_[6 * a]), v_a(&gathered_[6 * a + 3]),
+        u_b(&gathered_[6 * b]), v_b(&gathered_[6 * b + 3]);
+    const Eigen::Vector3d stretch = u_b - u_a, rate = v_b - v_a;
+    const Eigen::Vector3d force = spring_translational_force(spring.element, stretch, rate);
+    if (const LocalIndex node = gathered_owned_[a]; node >= 0) {
+      for (int d = 0; d < 3; ++d)
+        nodes.residual[3 * node + d] += force[d];
+      // Counted once, by the rank that owns the A node.
+      energy += spring_translational_energy(spring.element, stretch);
+      power += spring_translational_power(spring.element, rate);
+    }
+    if (const LocalIndex node = gathered_owned_[b]; node >= 0)
+      for (int d = 0; d < 3; ++d)
+        nodes.residual[3 * node + d] -= force[d];
+  }
+  return power;
+}
+
 double DiscreteParts::add_spring_forces(const NodalArrays& nodes, double& energy) {
   double power = 0;
+  if (!gathered_nodes_.empty())
+    gather_paired_motion(nodes);
   for (const Spring& spring : springs_) {
+    if (!spring.pair_slots.empty()) {
+      power += add_paired_spring_forces(spring, nodes, energy);
+      continue;
+    }
     if (spring.a.share > 0) {
       // One spring per owned node, to the ground or to a body's reference point.
       Eigen::Vector3d u_b = Eigen::Vector3d::Zero(), v_b = Eigen::Vector3d::Zero();

@@ -4,12 +4,16 @@
 /// replicated on every rank; the nodes it carries are moved with it, and their forces are summed
 /// over ranks each step (one reduction for all bodies). Springs to node sets act on the owned
 /// nodes of each rank; springs between bodies and to the ground are evaluated on every rank.
+/// A spring between two node sets ties each node of End A to the nearest node of End B
+/// (framework/mesh/nearest_nodes.hpp); the motion of those nodes is gathered over ranks each
+/// step (one reduction for all such springs), since the two ends need not share a rank.
 /// Time stepping is the same central difference as the nodes: translation exactly, rotation as
 /// kick–drift–kick on the spatial angular momentum with an energy- and momentum-conserving free
 /// rotation between the kicks (rigid_rotation.hpp).
 
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -125,12 +129,25 @@ class DiscreteParts {
     std::string name;
     SpringEnd a, b;        // b with body −1 and no nodes = ground
     SpringDamper element;  // along the global axes; per node for a node-set end (shared)
+    // Between two node sets: each A node and its partner (global), and their slots in
+    // gathered_nodes_.
+    std::vector<std::pair<GlobalIndex, GlobalIndex>> pairs;
+    std::vector<std::array<int, 2>> pair_slots;
   };
+  // Numbers the nodes of springs between node sets and sets their pair_slots.
+  void number_gathered_nodes(const MeshPartition& partition);
+  // Gathers u and v of gathered_nodes_ over ranks into gathered_ (6 per node).
+  void gather_paired_motion(const NodalArrays& nodes);
+  double add_paired_spring_forces(const Spring& spring, const NodalArrays& nodes, double& energy);
   void add_body_force(const Spring& spring, const Eigen::Vector3d& force_on_a, bool to_b);
 
   std::vector<RigidBody> bodies_;
   std::vector<RigidRotation> rotations_;  // per body
   std::vector<Spring> springs_;
+  Communicator comm_;
+  std::vector<GlobalIndex> gathered_nodes_;  // nodes of springs between node sets, sorted
+  std::vector<LocalIndex> gathered_owned_;   // each one's owned local index here, or −1
+  std::vector<double> gathered_;             // their u and v, summed over ranks
   std::vector<int> body_of_node_;
   std::vector<BodyMoment> moments_;
   std::vector<Expression> moment_functions_;

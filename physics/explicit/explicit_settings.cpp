@@ -4,6 +4,7 @@
 
 #include "framework/base/error.hpp"
 #include "framework/deck/expression.hpp"
+#include "framework/mesh/nearest_nodes.hpp"
 #include "physics/common/solid_conditions.hpp"
 
 namespace railfe {
@@ -56,7 +57,8 @@ ParameterSpec discrete_parameters() {
   ParameterSpec spring(
       "A linear spring–damper acting along the global axes between two ends. An end is a rigid "
       "body (its reference point), a node set (one spring per node, stiffness and damping "
-      "shared equally) or, for End B only, 'ground'.");
+      "shared equally) or, for End B only, 'ground'. Between two node sets, each node of End A "
+      "is tied to the nearest node of End B (a rail seat on the pad over a sleeper's top).");
   spring.required_text("End A", "A rigid body or node set.");
   spring.text("End B", "ground", "A rigid body, a node set or 'ground'.");
   spring.real_array("Stiffness", {0, 0, 0}, "Stiffness along x, y, z.", "N/m", 3,
@@ -566,6 +568,9 @@ void check_explicit_settings(const ExplicitSettings& settings, const Mesh& mesh,
                         "names '" + end + "', which is no rigid body or node set",
                         "the name of a rigid body, a node set or 'ground'");
     }
+    if (!bodies.count(spring.end_a) && spring.end_b != "ground" && !bodies.count(spring.end_b))
+      check_disjoint_node_sets(mesh, spring.end_a, spring.end_b, deck,
+                               discrete + "/Springs/" + spring.name + "/End B");
   }
   for (const auto& moment : settings.moments) {
     if (!bodies.count(moment.body))

@@ -1,14 +1,13 @@
 #include "physics/statics/contact_linearization.hpp"
 
-#include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include <algorithm>
 #include <array>
-#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "contact/search/quad_projection.hpp"
+#include "framework/assembly/sparse_entries.hpp"
 #include "framework/mesh/partition.hpp"
 #include "physics/common/contact_pairs.hpp"
 
@@ -19,7 +18,7 @@ ContactLinearization linearize_contact(const ContactPairs& contact, const DofMap
   const Mesh& mesh = dofs.partition().mesh();
   ContactLinearization result;
   result.force = Teuchos::rcp(new TpetraVector(map));
-  std::vector<std::tuple<GlobalIndex, GlobalIndex, double>> entries;
+  std::vector<MatrixEntry> entries;
   for (const PenaltyContactPair& pair : contact.pairs()) {
     const PenaltyPairGeometry& geometry = pair.geometry();
     for (std::size_t s = 0; s < pair.slaves().size(); ++s) {
@@ -55,39 +54,7 @@ ContactLinearization linearize_contact(const ContactPairs& contact, const DofMap
     }
   }
 
-  // Merge duplicate entries, then build the matrix with exact row lengths.
-  std::sort(entries.begin(), entries.end(), [](const auto& p, const auto& q) {
-    return std::tie(std::get<0>(p), std::get<1>(p)) < std::tie(std::get<0>(q), std::get<1>(q));
-  });
-  std::vector<std::tuple<GlobalIndex, GlobalIndex, double>> merged;
-  for (const auto& entry : entries) {
-    if (!merged.empty() && std::get<0>(merged.back()) == std::get<0>(entry) &&
-        std::get<1>(merged.back()) == std::get<1>(entry))
-      std::get<2>(merged.back()) += std::get<2>(entry);
-    else
-      merged.push_back(entry);
-  }
-  const std::size_t n_rows = map->getNodeNumElements();
-  Teuchos::Array<std::size_t> row_lengths(n_rows, 0);
-  for (const auto& entry : merged)
-    ++row_lengths[map->getLocalElement(std::get<0>(entry))];
-  result.stiffness = Teuchos::rcp(new TpetraMatrix(map, row_lengths()));
-  for (std::size_t begin = 0; begin < merged.size();) {
-    std::size_t end = begin;
-    std::vector<GlobalIndex> columns;
-    std::vector<double> values;
-    while (end < merged.size() && std::get<0>(merged[end]) == std::get<0>(merged[begin])) {
-      columns.push_back(std::get<1>(merged[end]));
-      values.push_back(std::get<2>(merged[end]));
-      ++end;
-    }
-    result.stiffness->insertGlobalValues(
-        std::get<0>(merged[begin]),
-        Teuchos::ArrayView<const GlobalIndex>(columns.data(), static_cast<int>(columns.size())),
-        Teuchos::ArrayView<const double>(values.data(), static_cast<int>(values.size())));
-    begin = end;
-  }
-  result.stiffness->fillComplete(map, map);
+  result.stiffness = matrix_from_entries(map, std::move(entries));
   return result;
 }
 

@@ -1,43 +1,57 @@
 #pragma once
 /// \file
-/// Spring supports of a statics step: a node set tied to the ground by springs along the global
-/// axes, the total stiffness shared equally by its nodes (one spring per node), as the explicit
-/// module's node-set springs to 'ground' are, so that a statics preload and the explicit run
-/// that starts from it see the same supports (a rail on its pads, a sleeper on ballast).
+/// Springs on node sets in a statics step, as the explicit module's node-set springs are, so
+/// that a statics preload and the explicit run that starts from it see the same supports: a
+/// node set on springs to the ground (a sleeper on ballast), or tied to another node set (a rail
+/// seat on the pad over a sleeper), each node of the set to the nearest node of the other
+/// (framework/mesh/nearest_nodes.hpp). The stiffness is the set's total, shared equally by its
+/// nodes (one spring per node).
 
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Teuchos_ParameterList.hpp>
 
 #include "framework/assembly/dof_map.hpp"
 #include "framework/deck/parameter_spec.hpp"
-#include "framework/mesh/mesh.hpp"
 
 namespace railfe {
 
-/// One node set on springs to the ground.
-struct GroundSpring {
+/// One node set on springs to the ground or to another node set.
+struct NodeSetSpring {
   std::string name;                 ///< its deck name
   std::string node_set;             ///< the nodes
+  std::string to_node_set;          ///< the other end's nodes, or "" for the ground
   std::array<double, 3> stiffness;  ///< total along x, y, z (N/m), shared by the nodes
+  /// With another end: each node (that elements use) and its partner, global indices.
+  std::vector<std::pair<GlobalIndex, GlobalIndex>> pairs;
 };
 
 /// Valid parameters of one Springs sublist of a statics step.
-ParameterSpec ground_spring_parameters();
+ParameterSpec node_set_spring_parameters();
 
 /// Reads the step's Springs; throws InputError naming \p deck and the parameter for an unknown
-/// or empty node set, or a spring with no stiffness.
-std::vector<GroundSpring> read_ground_springs(const Teuchos::ParameterList& step, const Mesh& mesh,
-                                              const std::string& deck, const std::string& path);
+/// or empty node set, two sets that share a node, or a spring with no stiffness.
+std::vector<NodeSetSpring> read_node_set_springs(const Teuchos::ParameterList& step,
+                                                 const MeshPartition& partition,
+                                                 const std::string& deck, const std::string& path);
 
-/// Each spring's share on the diagonal, one value per owned DOF (for FeMatrix::add_to_diagonal).
-std::vector<double> ground_spring_diagonal(const std::vector<GroundSpring>& springs,
+/// The ground springs' share on the diagonal, one value per owned DOF (for
+/// FeMatrix::add_to_diagonal).
+std::vector<double> ground_spring_diagonal(const std::vector<NodeSetSpring>& springs,
                                            const DofMap& dofs);
 
-/// The force each spring exerts on the structure at displacement \p u (N, summed over ranks).
-std::vector<std::array<double, 3>> ground_spring_forces(const std::vector<GroundSpring>& springs,
-                                                        const DofMap& dofs, const TpetraVector& u);
+/// The stiffness of the springs between node sets over the owned DOFs, or null without any.
+Teuchos::RCP<TpetraMatrix> paired_spring_stiffness(const std::vector<NodeSetSpring>& springs,
+                                                   const DofMap& dofs);
+
+/// The force each spring exerts on its node set at displacement \p u (N, summed over ranks): on
+/// the structure for a ground spring, on the first set for a spring between sets (the other
+/// set takes the opposite, so these are internal forces).
+std::vector<std::array<double, 3>> node_set_spring_forces(const std::vector<NodeSetSpring>& springs,
+                                                          const DofMap& dofs,
+                                                          const TpetraVector& u);
 
 }  // namespace railfe

@@ -4,7 +4,7 @@
 #include "physics/common/contact_settings.hpp"
 #include "physics/common/solid_beam_ties.hpp"
 #include "physics/common/solid_conditions.hpp"
-#include "physics/statics/ground_springs.hpp"
+#include "physics/statics/node_set_springs.hpp"
 #include "physics/statics/statics_step.hpp"
 
 namespace railfe {
@@ -29,9 +29,10 @@ ParameterSpec statics_parameters() {
              Range::closed(0, 1));
   solid.only_when("Integration", {"one point"}, {"Hourglass coefficient"});
   spec.sublist("Solid", solid, "Hex8 formulation.");
-  spec.named_sublists("Springs", ground_spring_parameters(),
-                      "Node sets on springs to the ground (supports: pads, ballast); their forces "
-                      "go to <step>_springs.csv.");
+  spec.named_sublists("Springs", node_set_spring_parameters(),
+                      "Node sets on springs to the ground (supports: pads, ballast) or to another "
+                      "node set (a rail pad over a sleeper); their forces go to "
+                      "<step>_springs.csv.");
   spec.named_sublists("Contact pairs", contact_pair_parameters(ContactUse::statics),
                       "Frictionless penalty contact between deformable bodies (a static preload).");
   spec.integer("Contact iterations", 30,

@@ -1,5 +1,7 @@
 #include "physics/statics/statics_step.hpp"
 
+#include <TpetraExt_MatrixMatrix.hpp>
+#include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
 #include <algorithm>
@@ -92,10 +94,10 @@ void StaticsStep::check(const CheckContext& context) {
                               "' has the enhanced-strain element (material '" +
                               materials_->of_block(block).name + "')",
                           "'full' with enhanced-strain materials, or Element 'full integration'");
-  springs_ = read_ground_springs(*parameters_, mesh, deck, context.path);
+  springs_ = read_node_set_springs(*parameters_, context.model.partition(), deck, context.path);
   contact_pairs_ = read_contact_pairs(*parameters_, deck, context.path, ContactUse::statics);
   if (sections_ && !mixed_ && !springs_.empty())
-    throw_input_error(deck, context.path + "/Ground springs/" + springs_.front().name,
+    throw_input_error(deck, context.path + "/Springs/" + springs_.front().name,
                       "acts on solid nodes, and the model has beams, springs and point masses",
                       "a spring-damper section on a one-node block (Sections) for springs to "
                       "the ground");
@@ -151,6 +153,10 @@ void StaticsStep::run(StepContext& context) {
   }
   if (!springs_.empty())
     stiffness.add_to_diagonal(ground_spring_diagonal(springs_, dofs));
+  // Springs between node sets couple nodes no element joins: their matrix is added to K.
+  Teuchos::RCP<TpetraMatrix> K = stiffness.matrix();
+  if (const auto paired = paired_spring_stiffness(springs_, dofs); !paired.is_null())
+    K = Tpetra::MatrixMatrix::add(1.0, false, *K, 1.0, false, *paired);
   assembly_progress.finish();
   const double assembly_seconds = clock.seconds();
 
@@ -193,7 +199,7 @@ void StaticsStep::run(StepContext& context) {
   std::unique_ptr<ContactPairs> contact;
   ContactNewtonReport newton;
   if (contact_pairs_.empty()) {
-    const auto system = constraints.apply(stiffness.matrix(), *forces);
+    const auto system = constraints.apply(K, *forces);
     Progress setup_progress = context.progress("solver set-up", 1);
     solver->setup(system, elasticity_traits(dofs));
     setup_progress.finish();
@@ -214,10 +220,9 @@ void StaticsStep::run(StepContext& context) {
     contact->initialise(unit_mass, 0, x.data(), zero.data());
     const int max_iterations = parameters_->get<int>("Contact iterations");
     Progress progress = context.progress("contact iterations", max_iterations);
-    newton = solve_with_contact(stiffness.matrix(), original_forces, constraints, *solver,
-                                elasticity_traits(dofs), *contact, dofs, max_iterations,
-                                parameters_->get<double>("Contact tolerance"), context.path, *u,
-                                progress);
+    newton = solve_with_contact(
+        K, original_forces, constraints, *solver, elasticity_traits(dofs), *contact, dofs,
+        max_iterations, parameters_->get<double>("Contact tolerance"), context.path, *u, progress);
     progress.finish();
     report = newton.solve;
   }
@@ -227,10 +232,11 @@ void StaticsStep::run(StepContext& context) {
   // Equilibrium: applied loads, reactions and spring forces must cancel; the work of loads and
   // reactions gives the strain energy (the springs' included).
   auto reaction_sum = component_sums(reactions, dofs);
-  const auto spring_forces = ground_spring_forces(springs_, dofs, *u);
-  for (const auto& force : spring_forces)
+  const auto spring_forces = node_set_spring_forces(springs_, dofs, *u);
+  for (std::size_t s = 0; s < springs_.size(); ++s)
     for (int d = 0; d < 3; ++d)
-      reaction_sum[d] += force[d];
+      if (springs_[s].to_node_set.empty())  // the others are internal
+        reaction_sum[d] += spring_forces[s][d];
   double imbalance = 0, scale = 0;
   for (int d = 0; d < 3; ++d) {
     imbalance += std::pow(applied[d] + reaction_sum[d], 2);
@@ -245,7 +251,7 @@ void StaticsStep::run(StepContext& context) {
   double strain_energy = 0.5 * (original_forces.dot(*u) + reactions.dot(*u));
   if (contact) {
     TpetraVector ku(dofs.owned_map());
-    stiffness.matrix()->apply(*u, ku);
+    K->apply(*u, ku);
     strain_energy = 0.5 * ku.dot(*u);
   }
 

@@ -12,7 +12,7 @@
 #include "physics/common/solid_conditions.hpp"
 #include "physics/common/structural_sections.hpp"
 #include "physics/materials/elastic_material.hpp"
-#include "physics/statics/ground_springs.hpp"
+#include "physics/statics/node_set_springs.hpp"
 
 namespace railfe {
 
@@ -46,7 +46,7 @@ class StaticsStep : public AnalysisStep {
   std::string links_path_;        // where their errors point
   std::vector<std::vector<std::pair<GlobalIndex, GlobalIndex>>> tie_pairs_;
   std::vector<ContactPairSpec> contact_pairs_;
-  std::vector<GroundSpring> springs_;
+  std::vector<NodeSetSpring> springs_;
   double one_point_kappa_ = -1;  // ≥ 0: the one-point hex8 with this hourglass coefficient
 };
 
