@@ -36,6 +36,12 @@ SLEEPER_MASS = 150.0  # kg, half a concrete monoblock sleeper
 PAD = {"vertical": 1.3e9, "damping": 4.5e4, "shear": 5.0e7}  # N/m, N s/m, N/m
 BALLAST = {"vertical": 4.5e7, "damping": 3.2e4}  # N/m, N s/m per sleeper (per rail seat)
 PAD_LENGTH = 0.15  # m along the rail under each seat
+# Sleepers as coarse solids (--sleepers solids): half a concrete monoblock (B70-like, 2.6 m long)
+# under each seat, 12 hex8 as in the seed, from 0.55 m outside the rail's centre to the track's
+# centre line, 0.25 m wide and 0.2 m deep (156 kg); its top 15 mm below the rail's foot.
+SLEEPER_BOX = {"lengths": (0.25, 1.3, 0.2), "elements": (2, 6, 1), "field_side": 0.55,
+               "top": -0.175}
+CONCRETE = {"E": 38e9, "nu": 0.2, "density": 2400}  # Pa, -, kg/m3: prestressed C50/60
 # Pad and ballast in series (N/m): a seat's vertical support in statics and in the shipped decks.
 SEAT_VERTICAL = PAD["vertical"] * BALLAST["vertical"] / (PAD["vertical"] + BALLAST["vertical"])
 
@@ -88,7 +94,9 @@ def track_springs(seats, sleepers, bodies):
     run starts in balance. "bodies": a sleeper point mass under each seat, the pad between them
     and the ballast below; the preload, which has no sleeper unknowns, then differs from it in
     how the pad resists the seat's rotation, and the run starts with a transient (appends the
-    sleepers to \p bodies)."""
+    sleepers to \p bodies). "solids": each sleeper a coarse concrete solid, the pad a spring from
+    the seat's nodes to the sleeper's top and the ballast below, the same in the preload, so the
+    run starts in balance."""
     springs = []
     series = SEAT_VERTICAL
     # Two Kelvin elements in series, at frequencies well below kp / cp: each damper weighted by
@@ -105,6 +113,19 @@ def track_springs(seats, sleepers, bodies):
                 0))
             continue
         name = f"sleeper {k + 1}"
+        if sleepers == "solids":
+            # The pad ties each seat node to the nearest node of the sleeper's top; the ballast
+            # carries the sleeper's bottom, which is held sideways and along (Prescribed motion).
+            springs.append(block(f"pad {k + 1}", "\n".join([
+                p_("End A", "string", seat), p_("End B", "string", f"{name}.zmax"),
+                p_("Stiffness", "Array(double)",
+                   fmt([PAD["shear"], PAD["shear"], PAD["vertical"]])),
+                p_("Damping", "Array(double)", fmt([PAD["damping"]] * 3))]), 0))
+            springs.append(block(f"ballast {k + 1}", "\n".join([
+                p_("End A", "string", f"{name}.zmin"),
+                p_("Stiffness", "Array(double)", fmt([0, 0, BALLAST["vertical"]])),
+                p_("Damping", "Array(double)", fmt([0, 0, BALLAST["damping"]]))]), 0))
+            continue
         bodies.append(block(name, "\n".join([
             p_("Reference point", "Array(double)", fmt([x, RAIL_OFFSET, -0.25])),
             p_("Mass", "double", f"{SLEEPER_MASS:g}"), p_("Fixed translations", "string", "xy"),
@@ -118,6 +139,20 @@ def track_springs(seats, sleepers, bodies):
             p_("Stiffness", "Array(double)", fmt([0, 0, BALLAST["vertical"]])),
             p_("Damping", "Array(double)", fmt([0, 0, BALLAST["damping"]]))]), 0))
     return springs
+
+
+def sleeper_parts(seats):
+    """The sleepers as box parts under the seats (--sleepers solids), and their blocks."""
+    lx, ly, lz = SLEEPER_BOX["lengths"]
+    parts = [block(f"sleeper {k + 1}", "\n".join([
+        p_("Type", "string", "box"),
+        block("Box", "\n".join([
+            p_("Origin", "Array(double)", fmt([x - lx / 2, RAIL_OFFSET - SLEEPER_BOX["field_side"],
+                                               SLEEPER_BOX["top"] - lz])),
+            p_("Lengths", "Array(double)", fmt([lx, ly, lz])),
+            p_("Elements", "Array(int)", "{%d, %d, %d}" % SLEEPER_BOX["elements"]),
+            p_("Block name", "string", "sleeper")]), 0)]), 0) for k, x in enumerate(seats)]
+    return parts, [f"sleeper {k + 1}.sleeper" for k in range(len(seats))]
 
 
 def wheel_modes(x0):
@@ -226,15 +261,25 @@ def deck(case, p, sleepers=True):
             tread_box(arc))) + "\n" +
             p_("Within", "string", "tread"), 0), 0),
         p_("Translation", "Array(double)", fmt([x0, 0, AXIS_HEIGHT]))])
+    solid_sleepers = p.get("sleepers") == "solids"
+    sleepers, sleeper_blocks = sleeper_parts(seats) if solid_sleepers else ([], [])
     mesh = "\n".join([
         p_("Type", "string", "parts"),
-        block("Parts", block("rail", rail, 0) + "\n" + block("wheel", wheel, 0), 0),
+        block("Parts", "\n".join([block("rail", rail, 0), block("wheel", wheel, 0)] + sleepers),
+              0),
         block("Node sets", "\n".join(node_sets), 0)])
     L.append(block("Mesh", mesh, 2))
-    L.append(block("Materials", block("steel", "\n".join([
+    materials = [block("steel", "\n".join([
         p_("Young's modulus", "double", "210e9"), p_("Poisson's ratio", "double", "0.3"),
         p_("Density", "double", "7850"),
-        p_("Blocks", "Array(string)", "{rail.rail, wheel.wheel, wheel.axle}")]), 0), 2))
+        p_("Blocks", "Array(string)", "{rail.rail, wheel.wheel, wheel.axle}")]), 0)]
+    if solid_sleepers:
+        materials.append(block("concrete", "\n".join([
+            p_("Young's modulus", "double", f"{CONCRETE['E']:g}"),
+            p_("Poisson's ratio", "double", f"{CONCRETE['nu']:g}"),
+            p_("Density", "double", f"{CONCRETE['density']:g}"),
+            p_("Blocks", "Array(string)", "{" + ", ".join(sleeper_blocks) + "}")]), 0))
+    L.append(block("Materials", "\n".join(materials), 2))
     contact_common = "\n".join([
         p_("Slave side set", "string", "wheel.rolling tread"),
         p_("Master side set", "string", "rail.running_surface"),
@@ -249,14 +294,30 @@ def deck(case, p, sleepers=True):
         block(f"seat {k + 1}", p_("Node set", "string", f"seat {k + 1}") + "\n" + p_(
             "Stiffness", "Array(double)", fmt([PAD["shear"], PAD["shear"], series])), 0)
         for k in range(len(seats)))
+    held_sleepers = ""
+    if solid_sleepers:
+        # The explicit step's pads and ballast, stiffness only.
+        static_springs = "\n".join(
+            block(f"pad {k + 1}", "\n".join([
+                p_("Node set", "string", f"seat {k + 1}"),
+                p_("To node set", "string", f"sleeper {k + 1}.zmax"),
+                p_("Stiffness", "Array(double)",
+                   fmt([PAD["shear"], PAD["shear"], PAD["vertical"]]))]), 0) + "\n" +
+            block(f"ballast {k + 1}", "\n".join([
+                p_("Node set", "string", f"sleeper {k + 1}.zmin"),
+                p_("Stiffness", "Array(double)", fmt([0, 0, BALLAST["vertical"]]))]), 0)
+            for k in range(len(seats)))
+        held_sleepers = "\n" + "\n".join(
+            block(f"sleeper {k + 1}", p_("Node set", "string", f"sleeper {k + 1}.zmin") + held_xy,
+                  0) for k in range(len(seats)))
     preload = "\n".join([
         p_("Module", "string", "statics"), p_("Gravity", "Array(double)", "{0, 0, -9.81}"),
         p_("Contact tolerance", "double", "5e-4"),
         block("Solid", p_("Integration", "string", "one point"), 0),
         block("Linear solver", p_("Method", "string", "cholmod"), 0),
         block("Displacements", ends(held_xy) + "\n" + block("axle box", p_(
-            "Node set", "string", "wheel.axle_end") + "\n" + p_("Components", "string", "xy"), 0),
-            0),
+            "Node set", "string", "wheel.axle_end") + "\n" + p_("Components", "string", "xy"), 0)
+            + held_sleepers, 0),
         block("Nodal forces", block("sprung mass", p_("Node set", "string", "wheel.axle_end") +
                                     "\n" + p_("Total force", "Array(double)",
                                               fmt([0, 0, -SPRUNG_WEIGHT])), 0), 0),
@@ -318,7 +379,7 @@ def deck(case, p, sleepers=True):
             p_("Translation", "Array(double)", fmt([SPEED, 0, 0])),
             p_("Angular velocity", "Array(double)", fmt([0, omega, 0])),
             p_("Axis point", "Array(double)", fmt([x0, 0, AXIS_HEIGHT]))]), 0), 0),
-        block("Prescribed motion", ends(held_xy), 0),
+        block("Prescribed motion", ends(held_xy) + held_sleepers, 0),
         block("Discrete parts", "\n".join([
             block("Rigid bodies", "\n".join(bodies), 0),
             block("Springs", "\n".join(springs), 0)] + ([
@@ -363,11 +424,11 @@ def header(case, p, seats, zone, arc, motion):
   {p['rail_size'] * 1e3:g} mm; wheel: {p['arc_size'] * 1e3:g} mm over the arc {arc[0]:.1f}-{arc[1]:.1f} deg that rolls through the zone,
   {p['tread_size'] * 1e3:g} mm at the tread, {p['wheel_size'] * 1e3:g} mm elsewhere. Track: rail seats at {SLEEPER_SPACING:g} m
   ({len(seats)}), each on a pad ({PAD['vertical'] / 1e6:g} MN/m, {PAD['damping'] / 1e3:g} kN s/m; shear {PAD['shear'] / 1e6:g} MN/m) and ballast ({BALLAST['vertical'] / 1e6:g} MN/m,
-  {BALLAST['damping'] / 1e3:g} kN s/m) in series to the ground ({sleeper_text(p)});
+  {BALLAST['damping'] / 1e3:g} kN s/m) {sleeper_text(p)};
   rail ends held sideways and along. Car body and bogie: {SPRUNG_MASS:g} kg on the primary
   suspension (1.15 MN/m, 2.5 kN s/m) over the axle box, a rigid body carrying the axle's end.
   {modes_text(p)}Step "preload": statics under gravity, the sprung weight and the wheel's centrifugal load at
-  the rolling speed (pad and ballast in series), the wheel pressed into the rail
+  the rolling speed ({preload_support_text(p)}), the wheel pressed into the rail
   (frictionless): wheel load 111 kN. Only the tread faces of the refined arc are searched.
   Step "roll": explicit from the preload, wheel at 100 km/h and omega = V / {ROLLING_RADIUS} m;
   {torque_text(p)};
@@ -399,8 +460,19 @@ def modes_text(p):
 
 def sleeper_text(p):
     if p.get("sleepers", "springs") == "springs":
-        return "sleeper mass left out: the run starts in balance"
-    return f"sleepers as {SLEEPER_MASS:g} kg point masses held sideways and along"
+        return "in series to the ground (sleeper mass left out: the run starts in balance)"
+    if p["sleepers"] == "solids":
+        lx, ly, lz = SLEEPER_BOX["lengths"]
+        return (f"below a sleeper, a concrete solid of {math.prod(SLEEPER_BOX['elements'])} hex8\n"
+                f"  ({lx:g} x {ly:g} x {lz:g} m, its bottom held sideways and along)")
+    return (f"in series to the ground (sleepers as {SLEEPER_MASS:g} kg point masses held sideways "
+            f"and along)")
+
+
+def preload_support_text(p):
+    if p.get("sleepers") == "solids":
+        return "the pads and ballast of the explicit step, stiffness only"
+    return "pad and ballast in series"
 
 
 def shipped():
@@ -415,7 +487,7 @@ def main():
     parser.add_argument("--case", type=int, choices=range(1, 6))
     parser.add_argument("--scale", choices=("full", "demo"), default="full")
     parser.add_argument("--output")
-    parser.add_argument("--sleepers", choices=("springs", "bodies"))
+    parser.add_argument("--sleepers", choices=("springs", "bodies", "solids"))
     parser.add_argument("--modes", action="store_true", default=None,
                         help="add the wheel's modal step (the full-scale decks have it)")
     parser.add_argument("--kinematics", action="store_true", default=None,
