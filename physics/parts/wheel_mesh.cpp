@@ -147,6 +147,15 @@ ParameterSpec wheel_parameters() {
   spec.real("Arc element size", 0.001,
             "Element length at the running circle inside the Refined arc (only with one).", "m",
             Range::closed(2e-4, 0.1));
+  spec.real_array("Approach arc", {},
+                  "{start, end} angles (degrees) of an arc around the Refined arc meshed at "
+                  "Approach element size, graded into it with Growth: the path rolled before the "
+                  "refined arc, fine enough that the slices' chords do not sag into the contact "
+                  "({} = none).",
+                  "degree", 0);
+  spec.real("Approach element size", 0.004,
+            "Element length at the running circle inside the Approach arc (only with one).", "m",
+            Range::closed(2e-4, 0.1));
   spec.real("Growth", 1.25,
             "Ratio of neighbouring element lengths around the axis between the refined arc and "
             "the rest (only with a Refined arc).",
@@ -176,6 +185,27 @@ WheelDimensions wheel_dimensions(const Teuchos::ParameterList& list, const Deck&
   d.refined_arc = list.get<Teuchos::Array<double>>("Refined arc").toVector();
   d.arc_element_size = list.get<double>("Arc element size");
   d.growth = list.get<double>("Growth");
+  d.approach_arc = list.get<Teuchos::Array<double>>("Approach arc").toVector();
+  d.approach_element_size = list.get<double>("Approach element size");
+  if (d.approach_arc.empty() && !list.getEntry("Approach element size").isDefault())
+    refuse(deck.source, "Approach element size", "is given without an Approach arc",
+           "an Approach arc with it");
+  if (!d.approach_arc.empty()) {
+    if (d.refined_arc.empty())
+      refuse(deck.source, "Approach arc", "is given without a Refined arc",
+             "a Refined arc inside it");
+    if (d.approach_arc.size() != 2 || !(d.approach_arc[0] <= d.refined_arc[0]) ||
+        !(d.approach_arc[1] >= d.refined_arc[1]) || d.approach_arc[1] - d.approach_arc[0] >= 360)
+      refuse(deck.source, "Approach arc", "does not enclose the Refined arc",
+             "{start, end} in degrees with start <= the Refined arc's start, end >= its end and "
+             "end < start + 360");
+    if (!(d.approach_element_size > d.arc_element_size) ||
+        !(d.approach_element_size < 2 * kPi * d.nominal_diameter / 2 / wheel_elements_around(d)))
+      refuse(deck.source, "Approach element size",
+             "is not between the Arc element size and "
+             "the slices' size elsewhere",
+             "Arc element size < Approach element size < the circumference / Elements around");
+  }
   if (d.refined_arc.empty()) {
     for (const char* name : {"Arc element size", "Growth"}) {
       if (!list.getEntry(name).isDefault())
@@ -283,11 +313,24 @@ std::vector<double> wheel_slice_angles(const WheelDimensions& d) {
   const int m = std::max(1, static_cast<int>(std::ceil(arc * radius / d.arc_element_size - 1e-9)));
   for (int k = 0; k < m; ++k)
     angles.push_back(start + arc * k / m);
-  // The rest of the circle, graded from both ends of the arc towards its middle.
-  const double gap = 2 * kPi * radius - arc * radius;
-  const std::vector<double> half =
-      graded_lengths(gap / 2, arc * radius / m, 2 * kPi * radius / n, d.growth);
-  double at = start + arc;
+  // The approach arc on either side (graded from the arc's size up to its own), then the rest
+  // of the circle, graded from both ends towards its middle.
+  double at = start + arc, gap = 2 * kPi * radius - arc * radius, edge = arc * radius / m;
+  std::vector<double> before;  // lengths from the refined arc's start backwards
+  if (!d.approach_arc.empty()) {
+    const double ahead = (d.approach_arc[1] - d.refined_arc[1]) * kPi / 180 * radius;
+    const double behind = (d.refined_arc[0] - d.approach_arc[0]) * kPi / 180 * radius;
+    if (ahead > 0)
+      for (double length : graded_lengths(ahead, edge, d.approach_element_size, d.growth)) {
+        angles.push_back(at);
+        at += length / radius;
+      }
+    if (behind > 0)
+      before = graded_lengths(behind, edge, d.approach_element_size, d.growth);
+    gap -= ahead + behind;
+    edge = d.approach_element_size;
+  }
+  const std::vector<double> half = graded_lengths(gap / 2, edge, 2 * kPi * radius / n, d.growth);
   for (double length : half) {
     angles.push_back(at);
     at += length / radius;
@@ -298,6 +341,10 @@ std::vector<double> wheel_slice_angles(const WheelDimensions& d) {
   }
   if (half.size() > 0)
     angles.push_back(at);
+  for (auto it = before.rbegin(); it != before.rend(); ++it) {
+    at += (it == before.rbegin() ? half.front() : *(it - 1)) / radius;
+    angles.push_back(at);
+  }
   return angles;
 }
 

@@ -49,7 +49,12 @@ struct WheelDimensions {
   double tread_element_size = 0;     ///< the section's size at the tread; 0 = element_size
   std::vector<double> refined_arc;   ///< {start, end} (degrees) refined around, or empty
   double arc_element_size = 0.001;   ///< length at the running circle inside the refined arc
-  double growth = 1.25;              ///< ratio of neighbouring slices between arc and the rest
+  /// {start, end} (degrees) around the refined arc meshed at approach_element_size, or empty:
+  /// the path a wheel rolls before it reaches the refined arc, fine enough that its chords do not
+  /// sag into the contact, not as fine as the arc.
+  std::vector<double> approach_arc;
+  double approach_element_size = 0.004;  ///< length at the running circle in the approach arc
+  double growth = 1.25;                  ///< ratio of neighbouring slices between arc and the rest
 };
 
 /// The cross-section in (r, a), each outline counter-clockwise with r as the first coordinate.

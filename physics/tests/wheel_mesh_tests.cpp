@@ -123,6 +123,46 @@ TEST(WheelMesh, RefusesDimensionsThatMakeNoWheel) {
   EXPECT_NE(message.find("not found"), std::string::npos) << message;
 }
 
+TEST(WheelMesh, ApproachArc) {
+  // 2 mm over 300-310°, 6 mm over the approach 270-315°, 30 mm elsewhere: every slice of the
+  // approach about 6 mm at most, the refined arc uniform, neighbours graded, the circle closed.
+  WheelDimensions d = coarse();
+  d.element_size = 0.03;
+  d.refined_arc = {300, 310};
+  d.arc_element_size = 0.002;
+  d.approach_arc = {270, 315};
+  d.approach_element_size = 0.006;
+  const std::vector<double> angles = wheel_slice_angles(d);
+  const double radius = d.nominal_diameter / 2, degree = kPi / 180;
+  EXPECT_NEAR(angles.front(), 300 * degree, 1e-12);
+  int in_arc = 0, in_approach = 0;
+  for (std::size_t k = 0; k < angles.size(); ++k) {
+    const double next = k + 1 < angles.size() ? angles[k + 1] : angles[0] + 2 * kPi;
+    ASSERT_GT(next, angles[k]) << k;
+    const double length = (next - angles[k]) * radius;
+    const double middle = std::fmod(0.5 * (angles[k] + next), 2 * kPi);
+    if (middle > 300 * degree && middle < 310 * degree) {
+      EXPECT_NEAR(length, 10 * degree * radius / 41, 1e-12) << k;  // 80.3 mm in 41 slices
+      ++in_arc;
+    } else if (middle > 270 * degree && middle < 315 * degree) {
+      // The graded slices are stretched to fill the approach exactly: by under half a slice's
+      // share over the 30 or so, about 6 % at most here.
+      EXPECT_LE(length, 0.006 * 1.07) << k;
+      ++in_approach;
+    } else {
+      EXPECT_LE(length, 0.03 * 1.0001) << k;
+    }
+    const double previous =
+        (angles[k] - (k > 0 ? angles[k - 1] : angles.back() - 2 * kPi)) * radius;
+    EXPECT_LT(std::max(length / previous, previous / length), 1.5 * d.growth) << k;
+  }
+  EXPECT_EQ(in_arc, 41);
+  // 36 degrees of approach (289 mm) at up to 6 mm, a few of them graded from 2 mm.
+  EXPECT_GE(in_approach, 49);
+  EXPECT_LE(in_approach, 60);
+  EXPECT_NO_THROW(check_mesh(build_wheel_mesh(d, "test")));
+}
+
 TEST(WheelMesh, RefinedArcAndTread) {
   // 30° refined to 4 mm at the running circle, 30 mm elsewhere; the section 6 mm at the tread.
   WheelDimensions d = coarse();

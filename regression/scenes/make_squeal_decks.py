@@ -53,7 +53,7 @@ FULL = {
     "title": "full scale",
     "rail_length": 2.4, "start_x": 0.7, "zone": (0.39, 0.54),
     "zone_size": 0.001, "rail_size": 0.02, "head_size": 0.001, "section_size": 0.01,
-    "wheel_size": 0.03, "tread_size": 0.002, "arc_size": 0.001,
+    "wheel_size": 0.03, "tread_size": 0.002, "arc_size": 0.001, "approach_size": 0.004,
     "end_time": 0.019, "ramp": 0.006, "lateral_start": 0.016, "lateral_ramp": 5e-4,
     "patch_times": [0.014 + 0.00025 * k for k in range(21)], "mass_scaling": 2.5e-8,
     "modes": True,
@@ -179,11 +179,24 @@ def refined_arc(p):
     preload rests on, lie on the lowest point."""
     slice_deg = math.degrees(p["arc_size"] / WHEEL_RADIUS)
     margin = math.degrees(0.012 / ROLLING_RADIUS)
+    if p.get("approach_size"):  # only what rolls through the zone; approach_arc() leads to it
+        return (270 + math.degrees(p["zone"][0] / ROLLING_RADIUS) - margin,
+                270 + math.degrees(p["zone"][1] / ROLLING_RADIUS) + margin)
     before = min(0.0, math.degrees(p["zone"][0] / ROLLING_RADIUS)) - margin
     after = math.degrees(p["zone"][1] / ROLLING_RADIUS) + margin
     start = 270 - math.ceil(-before / slice_deg) * slice_deg
     count = math.ceil((270 + after - start) / slice_deg)
     return (start, start + count * slice_deg)
+
+
+def approach_arc(p, arc):
+    """With an approach size (the full-scale decks), the path the tread rolls before the zone:
+    from a patch length behind the lowest point to the refined arc, meshed at approach_size
+    (4 mm: chords sag 4 um, a fifth of the contact's penetration) instead of the arc's 1 mm,
+    which halves the wheel's elements. None without."""
+    if not p.get("approach_size"):
+        return None
+    return (270 - math.degrees(0.012 / ROLLING_RADIUS), arc[1])
 
 
 def tread_box(arc):
@@ -221,6 +234,7 @@ def deck(case, p, sleepers=True):
     zone = (x0 + p["zone"][0], x0 + p["zone"][1])
     omega = SPEED / ROLLING_RADIUS
     arc = refined_arc(p)
+    approach = approach_arc(p, arc)
     seats = sleeper_positions(p["rail_length"])
     series = SEAT_VERTICAL
     motion = lateral_motion(case, p)
@@ -251,14 +265,17 @@ def deck(case, p, sleepers=True):
             p_("Half axle", "bool", "true"), p_("Element size", "double", p["wheel_size"]),
             p_("Tread element size", "double", p["tread_size"]),
             p_("Refined arc", "Array(double)", "{%.15g, %.15g}" % arc),
-            p_("Arc element size", "double", p["arc_size"])]), 0),
+            p_("Arc element size", "double", p["arc_size"])] + ([
+            p_("Approach arc", "Array(double)", "{%.15g, %.15g}" % approach),
+            p_("Approach element size", "double", p["approach_size"])] if approach else [])),
+            0),
         block("Node sets", "\n".join([
             block("all", p_("Box", "Array(double)", "{-1, 1, -1, 1, -1, 1}"), 0),
             block("rim point", p_("Point", "Array(double)", fmt(rim)), 0)] + ([
             block("rim behind", p_("Point", "Array(double)", fmt((-rim[0],) + rim[1:])), 0)]
             if p.get("kinematics") else [])), 0),
         block("Side sets", block("rolling tread", p_("Box", "Array(double)", fmt(
-            tread_box(arc))) + "\n" +
+            tread_box((approach or arc)[:1] + arc[1:]))) + "\n" +
             p_("Within", "string", "tread"), 0), 0),
         p_("Translation", "Array(double)", fmt([x0, 0, AXIS_HEIGHT]))])
     solid_sleepers = p.get("sleepers") == "solids"
@@ -421,7 +438,7 @@ def header(case, p, seats, zone, arc, motion):
   Model: an S1002 wheel (920 mm) with half its axle rolls at 100 km/h on a {p['rail_length']:g} m 54E1
   rail from its EN 13674-1 drawing, inclined 1:40, its centre 2.5 mm outboard of the running
   circle. Rail: {p['zone_size'] * 1e3:g} mm elements over the solution zone x = {zone[0]:.3f}-{zone[1]:.3f} m, graded to
-  {p['rail_size'] * 1e3:g} mm; wheel: {p['arc_size'] * 1e3:g} mm over the arc {arc[0]:.1f}-{arc[1]:.1f} deg that rolls through the zone,
+  {p['rail_size'] * 1e3:g} mm; wheel: {p['arc_size'] * 1e3:g} mm over the arc {arc[0]:.1f}-{arc[1]:.1f} deg that rolls through the zone,{approach_text(p, arc)}
   {p['tread_size'] * 1e3:g} mm at the tread, {p['wheel_size'] * 1e3:g} mm elsewhere. Track: rail seats at {SLEEPER_SPACING:g} m
   ({len(seats)}), each on a pad ({PAD['vertical'] / 1e6:g} MN/m, {PAD['damping'] / 1e3:g} kN s/m; shear {PAD['shear'] / 1e6:g} MN/m) and ballast ({BALLAST['vertical'] / 1e6:g} MN/m,
   {BALLAST['damping'] / 1e3:g} kN s/m) {sleeper_text(p)};
@@ -429,7 +446,7 @@ def header(case, p, seats, zone, arc, motion):
   suspension (1.15 MN/m, 2.5 kN s/m) over the axle box, a rigid body carrying the axle's end.
   {modes_text(p)}Step "preload": statics under gravity, the sprung weight and the wheel's centrifugal load at
   the rolling speed ({preload_support_text(p)}), the wheel pressed into the rail
-  (frictionless): wheel load 111 kN. Only the tread faces of the refined arc are searched.
+  (frictionless): wheel load 111 kN. Only the tread faces that roll over the rail are searched.
   Step "roll": explicit from the preload, wheel at 100 km/h and omega = V / {ROLLING_RADIUS} m;
   {torque_text(p)};
   {lateral}; {law}; {p['end_time'] * 1e3:g} ms.
@@ -439,6 +456,14 @@ def header(case, p, seats, zone, arc, motion):
   Charts:   python3 regression/charts/contact_force_history.py DIR/roll_contact_wheel-rail.csv
 -->
 """
+
+
+def approach_text(p, arc):
+    approach = approach_arc(p, arc)
+    if not approach:
+        return ""
+    return (f"\n  {p['approach_size'] * 1e3:g} mm over the approach {approach[0]:.1f}-{arc[0]:.1f} "
+            f"deg rolled before it,")
 
 
 def torque_text(p):
@@ -501,7 +526,8 @@ def main():
                              "(m; the refined arc follows; demo 0.05, full 0.54)")
     parser.add_argument("--patch-times", type=float, nargs="+",
                         help="times at which the contact patch is written (s)")
-    for key in ("zone_size", "head_size", "tread_size", "arc_size", "rail_length", "end_time",
+    for key in ("zone_size", "head_size", "tread_size", "arc_size", "approach_size",
+                "rail_length", "end_time",
                 "mass_scaling", "start_x"):
         parser.add_argument("--" + key.replace("_", "-"), type=float)
     args = parser.parse_args()
