@@ -524,6 +524,9 @@ def main():
     parser.add_argument("--zone-end", type=float,
                         help="the rail's solution zone ends this far ahead of the wheel's start "
                              "(m; the refined arc follows; demo 0.05, full 0.54)")
+    parser.add_argument("--zone-start", type=float,
+                        help="the rail's solution zone starts this far ahead of the wheel's "
+                             "start (m; demo -0.005, full 0.39)")
     parser.add_argument("--patch-times", type=float, nargs="+",
                         help="times at which the contact patch is written (s)")
     for key in ("zone_size", "head_size", "tread_size", "arc_size", "approach_size",
@@ -533,12 +536,14 @@ def main():
     args = parser.parse_args()
     if args.case:
         p = dict(FULL if args.scale == "full" else DEMO)
-        for key in list(p) + ["sleepers", "modes", "torque", "kinematics"]:
+        for key in list(p) + ["sleepers", "modes", "torque", "kinematics", "approach_size"]:
             value = getattr(args, key, None)
             if value is not None:
                 p[key] = value
         if args.zone_end is not None:
             p["zone"] = (p["zone"][0], args.zone_end)
+        if args.zone_start is not None:
+            p["zone"] = (args.zone_start, p["zone"][1])
         text = deck(args.case, p)
         open(args.output, "w").write(text) if args.output else sys.stdout.write(text)
         return 0
