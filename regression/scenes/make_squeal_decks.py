@@ -56,7 +56,7 @@ FULL = {
     "wheel_size": 0.03, "tread_size": 0.002, "arc_size": 0.001, "approach_size": 0.004,
     "end_time": 0.019, "ramp": 0.006, "lateral_start": 0.016, "lateral_ramp": 5e-4,
     "patch_times": [0.014 + 0.00025 * k for k in range(21)], "mass_scaling": 2.5e-8,
-    "modes": True,
+    "modes": True, "sleepers": "solids",
 }
 DEMO = {
     "title": "demo scale",

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """What the squeal scene's simplifications change (issue 16, "model no more than the scene
 needs"): the demo-scale case 3 run as shipped and with one choice changed at a time (sleepers as
-point masses between pad and ballast instead of left out; a track twice as long), each
+point masses between pad and ballast instead of left out, or as coarse solids; a track twice as
+long), each
 compared with the shipped model on the contact forces and the wheel's response over the run.
 
 Writes docs/data/squeal_simplifications.csv (one row per variant: wall time, elements, steps and
@@ -23,9 +24,12 @@ sys.path.insert(0, HERE)
 from railfe_runs import csv_rows, run_deck, step_section, study_parser, typed_rows, write_rows  # noqa: E402
 
 VARIANTS = [
-    ("shipped", "as shipped: seats on pad and ballast in series; 1.2 m track", []),
+    ("shipped", "as shipped: seats on pad and ballast in series; 1.2 m track",
+     ["--sleepers", "springs"]),
     ("sleeper masses", "sleepers as 150 kg point masses between pad and ballast",
      ["--sleepers", "bodies"]),
+    ("solid sleepers", "sleepers as 12-hex8 concrete solids (156 kg): pads from the seats to "
+     "their tops and ballast below; the same in the preload", ["--sleepers", "solids"]),
     ("long track", "2.4 m track (4 seats); the wheel starting at the same place in it",
      ["--rail-length", "2.4", "--start-x", "1.05"]),
 ]
