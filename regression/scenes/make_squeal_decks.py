@@ -45,6 +45,8 @@ CONCRETE = {"E": 38e9, "nu": 0.2, "density": 2400}  # Pa, -, kg/m3: prestressed 
 # Pad and ballast in series (N/m): a seat's vertical support in statics and in the shipped decks.
 SEAT_VERTICAL = PAD["vertical"] * BALLAST["vertical"] / (PAD["vertical"] + BALLAST["vertical"])
 
+LEAD_IN = 0.056  # m of refined arc rolled before the solution zone (2 ms at 100 km/h)
+
 # Lateral motion of the axle box (cases 2-4 small, medium, large): the lateral speed reached,
 # as a rigid lateral creepage v_y / V (the creepage in the patch lags it: the wheel and rail bend).
 LATERAL_CREEPAGE = {1: 0.0, 2: 0.0005, 3: 0.002, 4: 0.0045, 5: 0.002}
@@ -179,8 +181,11 @@ def refined_arc(p):
     preload rests on, lie on the lowest point."""
     slice_deg = math.degrees(p["arc_size"] / WHEEL_RADIUS)
     margin = math.degrees(0.012 / ROLLING_RADIUS)
-    if p.get("approach_size"):  # only what rolls through the zone; approach_arc() leads to it
-        return (270 + math.degrees(p["zone"][0] / ROLLING_RADIUS) - margin,
+    if p.get("approach_size"):
+        # Only what rolls through the zone, entered LEAD_IN (2 ms) before it so that the change
+        # from the approach's slices has passed (docs/verification.md#squeal-scene);
+        # approach_arc() leads to it.
+        return (270 + math.degrees((p["zone"][0] - LEAD_IN) / ROLLING_RADIUS) - margin,
                 270 + math.degrees(p["zone"][1] / ROLLING_RADIUS) + margin)
     before = min(0.0, math.degrees(p["zone"][0] / ROLLING_RADIUS)) - margin
     after = math.degrees(p["zone"][1] / ROLLING_RADIUS) + margin
