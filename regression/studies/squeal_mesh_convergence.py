@@ -110,12 +110,12 @@ def options(size_mm):
             "--arc-size", str(h), "--mass-scaling", f"{2.5e-5 * h:g}"]
 
 
-def in_window(rows):
-    return [r for r in rows if WINDOW[0] <= float(r["time_s"]) <= WINDOW[1]]
+def in_window(rows, window=WINDOW):
+    return [r for r in rows if window[0] <= float(r["time_s"]) <= window[1]]
 
 
-def window_mean(rows, column):
-    values = [float(r[column]) for r in in_window(rows)]
+def window_mean(rows, column, window=WINDOW):
+    values = [float(r[column]) for r in in_window(rows, window)]
     return sum(values) / len(values)
 
 
@@ -127,9 +127,10 @@ def column(rows, name):
     return [float(r[keys[0]]) for r in rows]
 
 
-def creepage(results):
-    """Window means of xi = omega r0 / V - 1 from the two rim points a (ahead) and b (behind)
-    at axle height, and of the rim's omega, the wheel centre's V and the axle box's speed.
+def creepage(results, window=WINDOW, before=BEFORE):
+    """Means over `window` (and over `before`) of xi = omega r0 / V - 1 from the two rim points
+    a (ahead) and b (behind) at axle height, and of the rim's omega, the wheel centre's V and the
+    axle box's speed.
 
     At t = 0 every wheel node moves rigidly: v = V0 + omega0 x (x - c). So the points' distance
     along x and their midpoint's offset m from the centre c are known from their first velocities;
@@ -156,14 +157,14 @@ def creepage(results):
              for k in range(len(rows))]
     xi = [w * ROLLING_RADIUS / v - 1 for w, v in zip(omega, speed)]
 
-    def mean(values, window=WINDOW):
-        chosen = [v for t, v in zip(time, values) if window[0] <= t <= window[1]]
+    def mean(values, span=window):
+        chosen = [v for t, v in zip(time, values) if span[0] <= t <= span[1]]
         return sum(chosen) / len(chosen)
 
-    return {"xi": mean(xi), "xi_before": mean(xi, BEFORE),
+    return {"xi": mean(xi), "xi_before": mean(xi, before),
             "xi_spread": math.sqrt(mean([(x - mean(xi)) ** 2 for x in xi])),
             "omega": mean(omega), "speed": mean(speed), "axle_speed": mean(axle),
-            "series": (time, xi)}
+            "series": (time, xi), "omega_series": omega, "speed_series": speed}
 
 
 def patch_shape(path):
@@ -184,13 +185,16 @@ def patch_shape(path):
 REUSE = False  # --reuse: read the runs already in --work instead of running them again
 
 
-def one_run(railfe, work, size, torque):
+def one_run(railfe, work, size, torque, variant=(), reuse=None):
+    """Case 1 at `size` mm (with the generator's `variant` options), driven or free; reuses
+    the run in `work` if asked to (default: --reuse) and its deck is the same."""
     extra = ["--case", "1", "--kinematics"] + ([] if torque else ["--torque", "0"])
     name = f"zone_{size:g}mm" + ("" if torque else "_free")
-    text = deck_text(options(size) + extra)  # the last --case wins
+    text = deck_text(options(size) + extra + list(variant))  # the last --case wins
     results = os.path.join(work, name + "_results")
     deck = os.path.join(work, name + ".xml")
-    if (REUSE and os.path.exists(os.path.join(results, "summary.json"))
+    reuse = REUSE if reuse is None else reuse
+    if (reuse and os.path.exists(os.path.join(results, "summary.json"))
             and open(deck).read() == text):
         with open(os.path.join(results, "summary.json")) as summary:
             return results, json.load(summary)
