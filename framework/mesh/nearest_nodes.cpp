@@ -44,8 +44,7 @@ std::vector<std::pair<GlobalIndex, GlobalIndex>> nearest_node_pairs(const MeshPa
                                                                     const std::string& deck,
                                                                     const std::string& path) {
   const std::vector<GlobalIndex> sources = active_nodes(partition, from, deck, path);
-  std::vector<GlobalIndex> targets = active_nodes(partition, to, deck, path);
-  std::sort(targets.begin(), targets.end());
+  const std::vector<GlobalIndex> targets = active_nodes(partition, to, deck, path);
   const std::vector<double>& x = partition.mesh().coordinates;
   std::vector<std::pair<GlobalIndex, GlobalIndex>> pairs;
   pairs.reserve(sources.size());

@@ -202,8 +202,7 @@ WheelDimensions wheel_dimensions(const Teuchos::ParameterList& list, const Deck&
     if (!(d.approach_element_size > d.arc_element_size) ||
         !(d.approach_element_size < 2 * kPi * d.nominal_diameter / 2 / wheel_elements_around(d)))
       refuse(deck.source, "Approach element size",
-             "is not between the Arc element size and "
-             "the slices' size elsewhere",
+             "is not between the Arc element size and the slices' size elsewhere",
              "Arc element size < Approach element size < the circumference / Elements around");
   }
   if (d.refined_arc.empty()) {
