@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "framework/base/error.hpp"
+#include "framework/mesh/revolve_detail.hpp"
 
 namespace railfe {
 
@@ -22,6 +23,8 @@ double signed_area(const SectionMesh& section, const std::array<GlobalIndex, 4>&
   }
   return twice / 2;
 }
+
+}  // namespace
 
 void check_section(const SectionMesh& section, int n_around) {
   if (n_around < 3) {
@@ -44,8 +47,15 @@ void check_section(const SectionMesh& section, int n_around) {
     throw std::logic_error("railfe: revolve: one block index per quad expected");
 }
 
-// Quads counter-clockwise in (r, a): seen from increasing θ, so nodes 0-3 (slice k) and 4-7
-// (slice k + 1) follow the hex8 convention.
+void check_angles(const std::vector<double>& angles) {
+  for (std::size_t k = 0; k < angles.size(); ++k) {
+    const double next = k + 1 < angles.size() ? angles[k + 1] : angles[0] + 2 * kPi;
+    if (!(next > angles[k]) || (k == 0 && angles[0] < 0))
+      throw std::logic_error("railfe: revolve: angles must increase within [0, 2π)");
+  }
+}
+
+// The (r, a) sense decides the hex orientation: see revolve_detail.hpp.
 std::vector<std::array<GlobalIndex, 4>> oriented_quads(const SectionMesh& section) {
   auto quads = section.quads;
   for (auto& quad : quads) {
@@ -55,7 +65,6 @@ std::vector<std::array<GlobalIndex, 4>> oriented_quads(const SectionMesh& sectio
   return quads;
 }
 
-// Boundary edges of the section: (quad, local edge j from corner j to corner j + 1).
 std::vector<std::pair<std::size_t, int>> boundary_edges(
     const std::vector<std::array<GlobalIndex, 4>>& quads) {
   std::map<std::pair<GlobalIndex, GlobalIndex>, std::pair<std::pair<std::size_t, int>, int>> seen;
@@ -75,8 +84,6 @@ std::vector<std::pair<std::size_t, int>> boundary_edges(
   }
   return result;
 }
-
-}  // namespace
 
 double SectionMesh::area() const {
   double sum = 0;
@@ -193,11 +200,7 @@ Mesh revolve(const SectionMesh& section, int n_around) {
 
 Mesh revolve(const SectionMesh& section, const std::vector<double>& angles) {
   check_section(section, static_cast<int>(angles.size()));
-  for (std::size_t k = 0; k < angles.size(); ++k) {
-    const double next = k + 1 < angles.size() ? angles[k + 1] : angles[0] + 2 * kPi;
-    if (!(next > angles[k]) || (k == 0 && angles[0] < 0))
-      throw std::logic_error("railfe: revolve: angles must increase within [0, 2π)");
-  }
+  check_angles(angles);
   return sweep(section, angles.size(), true, [&](std::size_t k, double r, double a, double* x) {
     x[0] = r * std::cos(angles[k]);
     x[1] = a;

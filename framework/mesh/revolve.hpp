@@ -53,6 +53,22 @@ Mesh revolve(const SectionMesh& section, int n_around);
 /// angles[k] to angles[k + 1] (the last closes to angles[0]). Throws InputError as revolve().
 Mesh revolve(const SectionMesh& section, const std::vector<double>& angles);
 
+/// revolve() with slices that coarsen towards the axis, so that a body refined over an arc at
+/// its rim does not carry the arc's slices, ever thinner, down to its bore. Section node i
+/// exists only at the angles of its level \p node_level[i]: level 0 has every angle, level l > 0
+/// the angle indices \p coarser_slices[l − 1] (increasing, from index 0, a subset of level
+/// l − 1's, each of its slices spanning one or three of level l − 1's). A quad whose nodes share
+/// a level is revolved through that level's slices. A transition quad has two adjacent nodes at
+/// level l − 1 and two at level l: where its slice spans three finer ones it becomes four hexes,
+/// the 3-to-1 template of the (radial, circumferential) plane swept across the quad, with new
+/// nodes half way along its two edges that join the levels, at the finer angles in between.
+/// Node sets hold the revolved nodes of their section nodes; side sets as revolve(). Throws
+/// InputError as revolve(); std::logic_error for levels that do not fit these rules or a side
+/// set along a transition quad.
+Mesh revolve(const SectionMesh& section, const std::vector<double>& angles,
+             const std::vector<int>& node_level,
+             const std::vector<std::vector<std::size_t>>& coarser_slices);
+
 /// The section swept along x: section point (u, v) at station k goes to (stations[k], u, v), so
 /// a section drawn with u lateral and v up gives a prismatic body along the track. Stations
 /// increase. Blocks, node sets and side sets as revolve(), plus the node and side sets

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include "framework/base/constants.hpp"
 #include "framework/base/error.hpp"
@@ -118,6 +119,68 @@ TEST(Revolve, UnequalAnglesGiveTheInscribedPolygonOfThoseChords) {
   EXPECT_NO_THROW(check_mesh(mesh));
   const double prism = (0.25 - 0.04) / 2 * 0.1;
   EXPECT_NEAR(volume(mesh), prism * (9 * std::sin(kPi / 18) + 9 * std::sin(kPi / 6)), 1e-15);
+}
+
+// Rows r = 0.4-0.5 at 12 slices, 0.2-0.3 at 4 (every third angle), the 3-to-1 template between.
+Mesh coarsening_annulus(std::vector<std::vector<std::size_t>> coarser = {{0, 3, 6, 9}}) {
+  const SectionMesh section = rectangle(0.2, 0.5, 0, 0.1, 3, 2);
+  std::vector<int> level;
+  for (GlobalIndex i = 0; i < section.n_nodes(); ++i)
+    level.push_back(section.coordinates[2 * i] < 0.35 ? 1 : 0);
+  std::vector<double> angles;
+  for (int k = 0; k < 12; ++k)
+    angles.push_back(2 * kPi * k / 12);
+  return revolve(section, angles, level, coarser);
+}
+
+TEST(Revolve, CoarseningSlicesTileTheBodyConformingly) {
+  const Mesh mesh = coarsening_annulus();
+  // Nodes: 2 radii x 3 heights at 12 angles, 2 x 3 at 4, and the templates' middles on the 3
+  // edges that join the levels at the 8 angles between. Hexes: 12 x 2, 4 x 4 x 2, 4 x 2.
+  EXPECT_EQ(mesh.n_nodes(), 72 + 24 + 24);
+  EXPECT_EQ(mesh.n_elements(), 24 + 32 + 8);
+  EXPECT_NO_THROW(check_mesh(mesh));
+  // Every piece is a right prism over straight-edged quads that tile the ring between the
+  // outer 12-gon and the inner 4-gon, so the volume is exact: h (A12(0.5) − A4(0.2)).
+  auto polygon = [](int n, double r) { return n * r * r * std::sin(2 * kPi / n) / 2; };
+  EXPECT_NEAR(volume(mesh), 0.1 * (polygon(12, 0.5) - polygon(4, 0.2)), 1e-15);
+  // Conforming: every face is shared by two hexes or lies on the outside (24 at r = 0.5, 8 at
+  // r = 0.2, 12 + 16 + 4 on each end plane); a hanging node would leave more faces single.
+  std::map<std::array<GlobalIndex, 4>, int> faces;
+  for (const auto& block : mesh.blocks)
+    for (GlobalIndex e = 0; e < block.n_elements(); ++e)
+      for (int f = 0; f < 6; ++f) {
+        std::array<GlobalIndex, 4> face;
+        for (int j = 0; j < 4; ++j)
+          face[j] = block.element_nodes(e)[kHex8FaceNodes[f][j]];
+        std::sort(face.begin(), face.end());
+        ++faces[face];
+      }
+  int single = 0, shared = 0;
+  for (const auto& [face, count] : faces) {
+    single += count == 1;
+    shared += count == 2;
+    EXPECT_LE(count, 2);
+  }
+  EXPECT_EQ(single, 24 + 8 + 2 * 32);
+  EXPECT_EQ(shared, (6 * 64 - single) / 2);
+  const auto& inner = mesh.node_set("inner", "", "");
+  EXPECT_EQ(inner.nodes.size(), 12u);
+  const auto& sides = mesh.side_set("inner", "", "");
+  ASSERT_EQ(sides.sides.size(), 8u);
+  for (const Side& side : sides.sides) {
+    const GlobalIndex* nodes = mesh.blocks[0].element_nodes(side.element);
+    for (int j = 0; j < 4; ++j) {
+      const auto x = mesh.node(nodes[kHex8FaceNodes[side.face][j]]);
+      EXPECT_NEAR(std::hypot(x[0], x[2]), 0.2, 1e-15);
+    }
+  }
+}
+
+TEST(Revolve, CoarseningSlicesMustSpanOneOrThree) {
+  EXPECT_THROW(coarsening_annulus({{0, 2, 6, 9}}), std::logic_error);
+  EXPECT_THROW(coarsening_annulus({{1, 3, 6, 9}}), std::logic_error);
+  EXPECT_NO_THROW(coarsening_annulus({{0, 1, 2, 3, 6, 9}}));
 }
 
 TEST(Extrude, PrismVolumeSetsAndEndFaces) {

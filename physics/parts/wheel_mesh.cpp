@@ -11,6 +11,7 @@
 #include "framework/mesh/gmsh_section.hpp"
 #include "framework/mesh/grading.hpp"
 #include "framework/mesh/revolve.hpp"
+#include "physics/parts/wheel_transitions.hpp"
 
 namespace railfe {
 
@@ -160,6 +161,14 @@ ParameterSpec wheel_parameters() {
             "Ratio of neighbouring element lengths around the axis between the refined arc and "
             "the rest (only with a Refined arc).",
             "", Range::open_closed(1, 2));
+  spec.real_array("Transition radii", {},
+                  "Radii (decreasing), each across the web or the hub, below which the slices "
+                  "of the Refined and Approach arcs coarsen threefold, so that slices fine at "
+                  "the tread do not reach the hub and axle even thinner (where they would set "
+                  "the explicit step). Each transition is a strip 4 x Arc element size deep "
+                  "meshed with a conforming 3-to-1 template ({} = none; only with a Refined "
+                  "arc).",
+                  "m", 0);
   return spec;
 }
 
@@ -187,6 +196,15 @@ WheelDimensions wheel_dimensions(const Teuchos::ParameterList& list, const Deck&
   d.growth = list.get<double>("Growth");
   d.approach_arc = list.get<Teuchos::Array<double>>("Approach arc").toVector();
   d.approach_element_size = list.get<double>("Approach element size");
+  d.transition_radii = list.get<Teuchos::Array<double>>("Transition radii").toVector();
+  if (!d.transition_radii.empty() && d.refined_arc.empty())
+    refuse(deck.source, "Transition radii", "is given without a Refined arc",
+           "a Refined arc with it (without one the slices are equal and coarse)");
+  for (std::size_t i = 0; i < d.transition_radii.size(); ++i)
+    if (!(d.transition_radii[i] > 0) ||
+        (i > 0 && !(d.transition_radii[i] < d.transition_radii[i - 1])))
+      refuse(deck.source, "Transition radii", "is not a list of decreasing positive radii",
+             "decreasing radii in metres, each across the web or the hub");
   if (d.approach_arc.empty() && !list.getEntry("Approach element size").isDefault())
     refuse(deck.source, "Approach element size", "is given without an Approach arc",
            "an Approach arc with it");
@@ -348,7 +366,7 @@ std::vector<double> wheel_slice_angles(const WheelDimensions& d) {
 }
 
 std::string wheel_geo_script(const WheelSection& section, double element_size,
-                             double tread_element_size) {
+                             double tread_element_size, const std::vector<WheelCut>& cuts) {
   std::ostringstream geo;
   geo << std::setprecision(15);
   geo << "// railfe wheel cross-section: x = r, y = a (m)\nh = " << element_size << ";\n";
@@ -370,10 +388,16 @@ std::string wheel_geo_script(const WheelSection& section, double element_size,
   loop << "Curve Loop(1) = {1, 2";
   for (std::size_t k = 0; k < n_lines; ++k) {
     const std::size_t i = section.tread_points - 1 + k, next = (i + 1) % wheel.size();
-    geo << "Line(" << 3 + k << ") = {" << i + 1 << ", " << next + 1 << "};\n";
-    loop << ", " << 3 + k;
+    if (!strip_side(cuts, i))
+      geo << "Line(" << outline_line_tag(section, i) << ") = {" << i + 1 << ", " << next + 1
+          << "};\n";
+    loop << ", " << outline_line_tag(section, i);
   }
-  geo << loop.str() << "};\nPlane Surface(1) = {1};\nPhysical Surface(\"wheel\", 1) = {1};\n";
+  // Cut lines follow the axle's lines; 1000 is clear of them (an axle has at most 6 points).
+  if (cuts.empty())
+    geo << loop.str() << "};\nPlane Surface(1) = {1};\nPhysical Surface(\"wheel\", 1) = {1};\n";
+  else
+    geo << cut_surfaces_geo(section, cuts, static_cast<int>(3 + n_lines + 1000));
   geo << "Physical Curve(\"tread\", 1) = {1, 2};\n";
   geo << "Physical Point(\"running_circle\", 2) = {" << section.running_point + 1 << "};\n";
   const std::size_t bore_line = 3 + (section.bore_start + 1 - section.tread_points);
@@ -440,10 +464,23 @@ Mesh build_wheel_mesh(const WheelDimensions& dimensions, const std::string& sour
            "asks for about " + std::to_string(static_cast<long long>(estimate)) + " elements",
            "at most about 1e8 elements");
   }
-  Mesh mesh = revolve(mesh_section_with_gmsh(wheel_geo_script(section, dimensions.element_size,
-                                                              dimensions.tread_element_size),
-                                             source + ": Mesh/Wheel"),
-                      angles);
+  WheelSection cut_section = section;
+  const std::vector<WheelCut> cuts =
+      dimensions.transition_radii.empty()
+          ? std::vector<WheelCut>{}
+          : cut_wheel_section(cut_section, dimensions.transition_radii,
+                              transition_width(dimensions), dimensions.element_size, source);
+  SectionMesh planar = mesh_section_with_gmsh(
+      wheel_geo_script(cut_section, dimensions.element_size, dimensions.tread_element_size, cuts),
+      source + ": Mesh/Wheel");
+  Mesh mesh;
+  if (cuts.empty()) {
+    mesh = revolve(planar, angles);
+  } else {
+    const std::vector<int> levels = add_transition_strips(planar, cuts, cut_section);
+    mesh = revolve(planar, angles, levels,
+                   coarser_wheel_slices(angles, largest_wheel_slices(dimensions)));
+  }
   mesh.source = source + ": Mesh/Wheel";
   return mesh;
 }

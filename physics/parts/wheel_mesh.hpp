@@ -55,6 +55,8 @@ struct WheelDimensions {
   std::vector<double> approach_arc;
   double approach_element_size = 0.004;  ///< length at the running circle in the approach arc
   double growth = 1.25;                  ///< ratio of neighbouring slices between arc and the rest
+  /// Radii (decreasing) below which the slices coarsen threefold (wheel_transitions.hpp).
+  std::vector<double> transition_radii;
 };
 
 /// The cross-section in (r, a), each outline counter-clockwise with r as the first coordinate.
@@ -67,6 +69,16 @@ struct WheelSection {
   std::size_t bore_start = 0;     ///< the bore runs from wheel[bore_start] to the next point
   /// The half axle, starting with the bore's two points in reverse; empty without it.
   std::vector<std::array<double, 2>> axle;
+};
+
+/// A cut across the wheel's section at a constant radius, where a transition strip begins or
+/// ends (wheel_transitions.hpp): the indices in WheelSection::wheel of its two points, in the
+/// order the outline meets them.
+struct WheelCut {
+  double radius = 0;       ///< r of the cut (m)
+  std::size_t first = 0;   ///< the point met first along the outline
+  std::size_t second = 0;  ///< the other point
+  int segments = 0;        ///< Gmsh segments along the cut (even, for the full-quad recombination)
 };
 
 /// Valid parameters of the Wheel sublist.
@@ -94,9 +106,10 @@ std::vector<double> wheel_slice_angles(const WheelDimensions& dimensions);
 /// The Gmsh script of the section (elements of \p tread_element_size at the tread growing to
 /// \p element_size 20 mm inside it, or \p element_size throughout when it is 0): blocks "wheel" and
 /// "axle", node sets "tread" (running surface and flange), "running_circle", "bore" (without axle)
-/// and "axle_end" (the axle's face in the wheelset centre plane).
+/// and "axle_end" (the axle's face in the wheelset centre plane). With \p cuts (their points in
+/// \p section), the strips between each pair of cuts are left out: see wheel_transitions.hpp.
 std::string wheel_geo_script(const WheelSection& section, double element_size,
-                             double tread_element_size = 0);
+                             double tread_element_size = 0, const std::vector<WheelCut>& cuts = {});
 
 /// The wheel mesh (Gmsh runs in a private temporary directory). Throws InputError naming
 /// \p source for bad dimensions and RunError when gmsh is missing.

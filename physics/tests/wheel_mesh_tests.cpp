@@ -11,6 +11,7 @@
 #include "framework/base/error.hpp"
 #include "framework/deck/deck.hpp"
 #include "framework/deck/validation.hpp"
+#include "framework/mesh/hex8_topology.hpp"
 #include "framework/mesh/mesh_checks.hpp"
 #include "framework/testing/input_error.hpp"
 #include "physics/parts/wheel_mesh.hpp"
@@ -161,6 +162,65 @@ TEST(WheelMesh, ApproachArc) {
   EXPECT_GE(in_approach, 49);
   EXPECT_LE(in_approach, 60);
   EXPECT_NO_THROW(check_mesh(build_wheel_mesh(d, "test")));
+}
+
+// Shortest element edge of the mesh (m).
+double shortest_edge(const Mesh& mesh) {
+  static const int edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                                   {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+  double shortest = 1e300;
+  for (const auto& block : mesh.blocks)
+    for (GlobalIndex e = 0; e < block.n_elements(); ++e)
+      for (const auto& edge : edges) {
+        const auto a = mesh.node(block.element_nodes(e)[edge[0]]);
+        const auto b = mesh.node(block.element_nodes(e)[edge[1]]);
+        shortest = std::min(shortest, std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]));
+      }
+  return shortest;
+}
+
+TEST(WheelMesh, TransitionRadii) {
+  // 2 mm slices over 20° at the running circle, coarsened threefold below r = 300 mm (in the
+  // web) and again below 120 mm (in the hub): the same body, fewer and no longer tiny elements.
+  WheelDimensions d = coarse();
+  d.element_size = 0.03;
+  d.half_axle = true;
+  d.refined_arc = {300, 320};
+  d.arc_element_size = 0.002;
+  const Mesh plain = build_wheel_mesh(d, "test");
+  d.transition_radii = {0.30, 0.12};
+  const Mesh graded = build_wheel_mesh(d, "test");
+  EXPECT_NO_THROW(check_mesh(graded));
+  EXPECT_LT(graded.n_elements(), plain.n_elements());
+  // Coarser slices inscribe fewer chords: at most 9 x 4.3e-3 rad, 1 − sin x / x = 2.5e-4 of
+  // the 20° sector's volume.
+  for (const char* block : {"wheel", "axle"})
+    EXPECT_NEAR(volume(graded, block) / volume(plain, block), 1, 1e-4) << block;
+  // The arc's 2 mm slices are 0.13 mm long at the axle's bore (r = 30 mm). Coarsened, the
+  // shortest edge there is a graded slice that no three could merge into one within the
+  // wheel's 29 mm slices (9.4 mm at the tread, 0.61 mm at the bore): over four times longer.
+  EXPECT_LT(shortest_edge(plain), 0.14e-3);
+  EXPECT_GT(shortest_edge(graded), 0.6e-3);
+  for (const char* name : {"tread", "running_circle", "axle_end"})
+    EXPECT_EQ(graded.node_set(name, "", "").nodes.size() > 0, true) << name;
+  EXPECT_EQ(graded.node_set("tread", "", "").nodes.size(),
+            plain.node_set("tread", "", "").nodes.size());
+  const auto& end = graded.side_set("axle_end", "", "");
+  ASSERT_FALSE(end.sides.empty());
+  for (const Side& side : end.sides) {
+    const auto& block = graded.blocks[graded.block_of(side.element)];
+    for (int j = 0; j < 4; ++j)
+      EXPECT_NEAR(graded.node(block.element_nodes(side.element)[kHex8FaceNodes[side.face][j]])[1],
+                  d.axle_length, 1e-12);
+  }
+  // Refused: strips that overlap (0.2 m and 0.195 m, each 8 mm deep), a cut below the bore.
+  d.transition_radii = {0.2, 0.195};
+  auto message = input_error_of([&] { build_wheel_mesh(d, "deck.xml"); });
+  EXPECT_NE(message.find("deck.xml: 'Mesh/Wheel/Transition radii'"), std::string::npos) << message;
+  EXPECT_NE(message.find("one inside the other"), std::string::npos) << message;
+  d.transition_radii = {0.05};
+  message = input_error_of([&] { build_wheel_mesh(d, "deck.xml"); });
+  EXPECT_NE(message.find("crosses the section's outline 0 times"), std::string::npos) << message;
 }
 
 TEST(WheelMesh, RefinedArcAndTread) {

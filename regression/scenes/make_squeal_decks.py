@@ -58,7 +58,7 @@ FULL = {
     "wheel_size": 0.03, "tread_size": 0.002, "arc_size": 0.001, "approach_size": 0.004,
     "end_time": 0.019, "ramp": 0.006, "lateral_start": 0.016, "lateral_ramp": 5e-4,
     "patch_times": [0.014 + 0.00025 * k for k in range(21)], "mass_scaling": 2.5e-8,
-    "modes": True, "sleepers": "solids",
+    "modes": True, "sleepers": "solids", "transitions": (0.30, 0.12),
 }
 DEMO = {
     "title": "demo scale",
@@ -272,7 +272,9 @@ def deck(case, p, sleepers=True):
             p_("Refined arc", "Array(double)", "{%.15g, %.15g}" % arc),
             p_("Arc element size", "double", p["arc_size"])] + ([
             p_("Approach arc", "Array(double)", "{%.15g, %.15g}" % approach),
-            p_("Approach element size", "double", p["approach_size"])] if approach else [])),
+            p_("Approach element size", "double", p["approach_size"])] if approach else []) + ([
+            p_("Transition radii", "Array(double)", fmt(p["transitions"]))]
+            if p.get("transitions") else [])),
             0),
         block("Node sets", "\n".join([
             block("all", p_("Box", "Array(double)", "{-1, 1, -1, 1, -1, 1}"), 0),
@@ -305,7 +307,7 @@ def deck(case, p, sleepers=True):
     contact_common = "\n".join([
         p_("Slave side set", "string", "wheel.rolling tread"),
         p_("Master side set", "string", "rail.running_surface"),
-        p_("Penalty factor", "double", "1")])
+        p_("Penalty factor", "double", f"{p.get('penalty', 1):g}")])
     ends = lambda extra: "\n".join(
         block(n, p_("Node set", "string", s) + extra, 0)
         for n, s in (("rail start", "rail.start_face"), ("rail end", "rail.end_face")))
@@ -443,7 +445,7 @@ def header(case, p, seats, zone, arc, motion):
   Model: an S1002 wheel (920 mm) with half its axle rolls at 100 km/h on a {p['rail_length']:g} m 54E1
   rail from its EN 13674-1 drawing, inclined 1:40, its centre 2.5 mm outboard of the running
   circle. Rail: {p['zone_size'] * 1e3:g} mm elements over the solution zone x = {zone[0]:.3f}-{zone[1]:.3f} m, graded to
-  {p['rail_size'] * 1e3:g} mm; wheel: {p['arc_size'] * 1e3:g} mm over the arc {arc[0]:.1f}-{arc[1]:.1f} deg that rolls through the zone,{approach_text(p, arc)}
+  {p['rail_size'] * 1e3:g} mm; wheel: {p['arc_size'] * 1e3:g} mm over the arc {arc[0]:.1f}-{arc[1]:.1f} deg that rolls through the zone,{approach_text(p, arc)}{transitions_text(p)}
   {p['tread_size'] * 1e3:g} mm at the tread, {p['wheel_size'] * 1e3:g} mm elsewhere. Track: rail seats at {SLEEPER_SPACING:g} m
   ({len(seats)}), each on a pad ({PAD['vertical'] / 1e6:g} MN/m, {PAD['damping'] / 1e3:g} kN s/m; shear {PAD['shear'] / 1e6:g} MN/m) and ballast ({BALLAST['vertical'] / 1e6:g} MN/m,
   {BALLAST['damping'] / 1e3:g} kN s/m) {sleeper_text(p)};
@@ -469,6 +471,14 @@ def approach_text(p, arc):
         return ""
     return (f"\n  {p['approach_size'] * 1e3:g} mm over the approach {approach[0]:.1f}-{arc[0]:.1f} "
             f"deg rolled before it,")
+
+
+def transitions_text(p):
+    if not p.get("transitions"):
+        return ""
+    radii = " and ".join(f"{r * 1e3:g}" for r in p["transitions"])
+    return (f"\n  its slices coarsening threefold below r = {radii} mm (Transition radii: the "
+            f"hub and axle\n  keep the step that the arc's slices would cut to a tenth),")
 
 
 def torque_text(p):
@@ -532,6 +542,11 @@ def main():
     parser.add_argument("--zone-start", type=float,
                         help="the rail's solution zone starts this far ahead of the wheel's "
                              "start (m; demo -0.005, full 0.39)")
+    parser.add_argument("--transitions", type=float, nargs="*",
+                        help="the wheel's Transition radii (m; none: uniform slices through "
+                             "hub and axle; full 0.30 0.12)")
+    parser.add_argument("--penalty", type=float,
+                        help="the contact's Penalty factor in the roll step (default 1)")
     parser.add_argument("--patch-times", type=float, nargs="+",
                         help="times at which the contact patch is written (s)")
     for key in ("zone_size", "head_size", "tread_size", "arc_size", "approach_size",
@@ -541,7 +556,8 @@ def main():
     args = parser.parse_args()
     if args.case:
         p = dict(FULL if args.scale == "full" else DEMO)
-        for key in list(p) + ["sleepers", "modes", "torque", "kinematics", "approach_size"]:
+        for key in list(p) + ["sleepers", "modes", "torque", "kinematics", "approach_size",
+                              "transitions", "penalty"]:
             value = getattr(args, key, None)
             if value is not None:
                 p[key] = value
