@@ -80,6 +80,21 @@ NodeSet select_nodes(const Mesh& mesh, const DerivedSetSpec& spec, const std::st
       if (inside(mesh, node, *spec.box, slack))
         set.nodes.push_back(node);
     }
+  } else if (spec.cylinder) {
+    const auto& c = *spec.cylinder;
+    const double length = std::sqrt(c[3] * c[3] + c[4] * c[4] + c[5] * c[5]);
+    const double slack = box_tolerance(mesh);
+    for (GlobalIndex node : candidates) {
+      double r[3], along = 0, squared = 0;
+      for (int d = 0; d < 3; ++d) {
+        r[d] = mesh.coordinates[3 * node + d] - c[d];
+        along += r[d] * c[3 + d] / length;
+      }
+      for (int d = 0; d < 3; ++d)
+        squared += std::pow(r[d] - along * c[3 + d] / length, 2);
+      if (std::sqrt(squared) <= c[6] + slack)
+        set.nodes.push_back(node);
+    }
   } else {
     double best = 1e300;
     GlobalIndex nearest = -1;
@@ -144,14 +159,26 @@ void add_derived_sets(Mesh& mesh, const std::vector<DerivedSetSpec>& specs,
       set.id = static_cast<int>(mesh.side_sets.size()) + 1;
       mesh.side_sets.push_back(std::move(set));
     } else {
-      if (spec.box.has_value() == spec.point.has_value()) {
-        throw_input_error(deck, spec.path, "give exactly one of 'Box' and 'Point'",
-                          "Box = {xmin, xmax, ymin, ymax, zmin, zmax} or Point = {x, y, z}");
+      const int given = spec.box.has_value() + spec.point.has_value() + spec.cylinder.has_value();
+      if (given != 1) {
+        throw_input_error(deck, spec.path, "give exactly one of 'Box', 'Point' and 'Cylinder'",
+                          "Box = {xmin, xmax, ymin, ymax, zmin, zmax}, Point = {x, y, z} or "
+                          "Cylinder = {x, y, z, ax, ay, az, radius}");
+      }
+      if (spec.cylinder) {
+        const auto& c = *spec.cylinder;
+        if (!(c[3] * c[3] + c[4] * c[4] + c[5] * c[5] > 0) || !(c[6] > 0))
+          throw_input_error(deck, spec.path + "/Cylinder", "has no axis direction or radius",
+                            "{x, y, z, ax, ay, az, radius} with a nonzero direction and a "
+                            "positive radius");
       }
       NodeSet set = select_nodes(mesh, spec, deck);
       if (set.nodes.empty()) {
-        throw_input_error(deck, spec.path + (spec.box ? "/Box" : "/Point"), "selects no nodes",
-                          "a region that contains nodes of the 'Within' set");
+        throw_input_error(deck,
+                          spec.path + (spec.box     ? "/Box"
+                                       : spec.point ? "/Point"
+                                                    : "/Cylinder"),
+                          "selects no nodes", "a region that contains nodes of the 'Within' set");
       }
       set.id = static_cast<int>(mesh.node_sets.size()) + 1;
       mesh.node_sets.push_back(std::move(set));

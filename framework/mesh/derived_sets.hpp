@@ -12,7 +12,7 @@
 
 namespace railfe {
 
-/// One set to add. Exactly one of box and point is given.
+/// One set to add. Exactly one of box, point and cylinder is given.
 struct DerivedSetSpec {
   std::string name;       ///< name of the new set
   bool side_set = false;  ///< true: a side set; false: a node set
@@ -23,6 +23,9 @@ struct DerivedSetSpec {
   /// Selects the single node nearest to this point (node sets only).
   std::optional<std::array<double, 3>> point;
   std::string path;  ///< deck path of the definition, for messages
+  /// Selects the nodes within a radius of an axis (node sets only): {x, y, z} of a point on the
+  /// axis, {ax, ay, az} its direction, and the radius.
+  std::optional<std::array<double, 7>> cylinder;
 };
 
 /// Adds the sets to \p mesh. Throws InputError (naming \p deck and the set's path) when a set's

@@ -93,9 +93,14 @@ void add_source_parameters(ParameterSpec& spec, const std::vector<Choice>& types
                      (parameters.doc().empty() ? generator.summary : parameters.doc()));
   }
 
-  ParameterSpec node_set("A node set selected from the mesh: give Box or Point.");
+  ParameterSpec node_set("A node set selected from the mesh: give Box, Point or Cylinder.");
   node_set.real_array("Box", {}, "Nodes inside {xmin, xmax, ymin, ymax, zmin, zmax}.", "m", 6);
   node_set.real_array("Point", {}, "The single node nearest to {x, y, z}.", "m", 3);
+  node_set.real_array("Cylinder", {},
+                      "Nodes within a radius of an axis: {x, y, z, ax, ay, az, radius}, a point "
+                      "on the axis, its direction and the radius (a wheel's hub and web: its "
+                      "axis y through the origin, a radius below the rim).",
+                      "m", 7);
   node_set.text("Within", "", "Select only among this node set's nodes ('' = all nodes).");
   ParameterSpec side_set("A side set selected from the mesh's element faces.");
   side_set.required_real_array("Box",
@@ -287,10 +292,13 @@ std::vector<DerivedSetSpec> derived_sets(const Teuchos::ParameterList& section,
     spec.within = entry.get<std::string>("Within");
     const auto& box = entry.get<Teuchos::Array<double>>("Box");
     const auto& point = entry.get<Teuchos::Array<double>>("Point");
+    const auto& cylinder = entry.get<Teuchos::Array<double>>("Cylinder");
     if (!box.empty())
       spec.box = array_of<6>(box);
     if (!point.empty())
       spec.point = array_of<3>(point);
+    if (!cylinder.empty())
+      spec.cylinder = array_of<7>(cylinder);
     derived.push_back(spec);
   }
   const auto& side_sets = section.sublist("Side sets");

@@ -117,6 +117,36 @@ TEST(DerivedSets, BoxPointAndSideSelections) {
   EXPECT_NE(message.find("already exists"), std::string::npos) << message;
   message = input_error_of([&] { mesh.node_set("xmn", "deck.xml", "Steps/s/Node set"); });
   EXPECT_NE(message.find("did you mean 'xmin'"), std::string::npos) << message;
+
+  // The unit cube's 5 x 5 x 5 nodes (spacing 0.25) within 0.3 of the axis x = y = 0.5 along z:
+  // the centre column and its four neighbours at 0.25, 5 nodes high; the diagonal ones at 0.354
+  // are outside. A tilted direction of the same axis selects the same nodes.
+  DerivedSetSpec core{"core",
+                      false,
+                      "",
+                      std::nullopt,
+                      std::nullopt,
+                      "c",
+                      std::array<double, 7>{0.5, 0.5, 0, 0, 0, 2, 0.3}};
+  DerivedSetSpec flipped = core;
+  flipped.name = "flipped";
+  flipped.cylinder = std::array<double, 7>{0.5, 0.5, 7, 0, 0, -1, 0.3};
+  add_derived_sets(mesh, {core, flipped}, "deck.xml");
+  EXPECT_EQ(mesh.node_set("core", "", "").nodes.size(), 25u);
+  EXPECT_EQ(mesh.node_set("flipped", "", "").nodes, mesh.node_set("core", "", "").nodes);
+  for (GlobalIndex node : mesh.node_set("core", "", "").nodes)
+    EXPECT_LE(std::hypot(mesh.node(node)[0] - 0.5, mesh.node(node)[1] - 0.5), 0.25 + 1e-12);
+  DerivedSetSpec both = core;
+  both.name = "both";
+  both.point = std::array<double, 3>{0, 0, 0};
+  message = input_error_of([&] { add_derived_sets(mesh, {both}, "deck.xml"); });
+  EXPECT_NE(message.find("exactly one of 'Box', 'Point' and 'Cylinder'"), std::string::npos)
+      << message;
+  DerivedSetSpec flat = core;
+  flat.name = "flat";
+  flat.cylinder = std::array<double, 7>{0.5, 0.5, 0, 0, 0, 0, 0.3};
+  message = input_error_of([&] { add_derived_sets(mesh, {flat}, "deck.xml"); });
+  EXPECT_NE(message.find("no axis direction"), std::string::npos) << message;
 }
 
 // Two hexes sharing a face, written with the Exodus library itself (not railfe's writer).

@@ -51,6 +51,16 @@ LEAD_IN = 0.056  # m of refined arc rolled before the solution zone (2 ms at 100
 # as a rigid lateral creepage v_y / V (the creepage in the patch lags it: the wheel and rail bend).
 LATERAL_CREEPAGE = {1: 0.0, 2: 0.0005, 3: 0.002, 4: 0.0045, 5: 0.002}
 
+# The steady-state check's hold (--hold-creepage): the axle box carries the wheel inside this
+# radius (the rim's inner surface is at 395 mm), and a flywheel's inertia about the axle keeps its
+# spin: a 20 kN creep force changes it by 2e-7 of itself per ms.
+HOLD_RADIUS = 0.385  # m
+HOLD_INERTIA = 1.0e6  # kg m^2
+# Along the axle, the hub's length (the default wheel's 180 mm about a = 20 mm): the half axle
+# beyond it stays elastic, and the preload holds and loads the same nodes, so that it has no
+# tilt from the axle's bending that a rigid start would snap out (2.9e-3 rad, 1.3 mm at the tread).
+HOLD_HUB = (-0.071, 0.111)  # m
+
 FULL = {
     "title": "full scale",
     "rail_length": 2.4, "start_x": 0.7, "zone": (0.39, 0.54),
@@ -243,6 +253,9 @@ def deck(case, p, sleepers=True):
     seats = sleeper_positions(p["rail_length"])
     series = SEAT_VERTICAL
     motion = lateral_motion(case, p)
+    hold = p.get("hold_creepage")
+    spin = omega * (1 + (hold or 0))
+    carried = "wheel.axle_end" if hold is None else "wheel.hub"  # what the axle box holds
     L = []
     L.append("<ParameterList name=\"railfe\">")
     L.append("  " + p_("Title", "string", f"Squeal rolling scene, case {case} ({p['title']})"))
@@ -279,6 +292,11 @@ def deck(case, p, sleepers=True):
         block("Node sets", "\n".join([
             block("all", p_("Box", "Array(double)", "{-1, 1, -1, 1, -1, 1}"), 0),
             block("rim point", p_("Point", "Array(double)", fmt(rim)), 0)] + ([
+            block("hub cylinder", p_("Cylinder", "Array(double)",
+                                     fmt([0, 0, 0, 0, 1, 0, HOLD_RADIUS])), 0),
+            block("hub", p_("Box", "Array(double)", fmt([-1, 1, *HOLD_HUB, -1, 1])) + "\n" +
+                  p_("Within", "string", "hub cylinder"), 0)]
+            if hold is not None else []) + ([
             block("rim behind", p_("Point", "Array(double)", fmt((-rim[0],) + rim[1:])), 0)]
             if p.get("kinematics") else [])), 0),
         block("Side sets", block("rolling tread", p_("Box", "Array(double)", fmt(
@@ -340,9 +358,9 @@ def deck(case, p, sleepers=True):
         block("Solid", p_("Integration", "string", "one point"), 0),
         block("Linear solver", p_("Method", "string", "cholmod"), 0),
         block("Displacements", ends(held_xy) + "\n" + block("axle box", p_(
-            "Node set", "string", "wheel.axle_end") + "\n" + p_("Components", "string", "xy"), 0)
+            "Node set", "string", carried) + "\n" + p_("Components", "string", "xy"), 0)
             + held_sleepers, 0),
-        block("Nodal forces", block("sprung mass", p_("Node set", "string", "wheel.axle_end") +
+        block("Nodal forces", block("sprung mass", p_("Node set", "string", carried) +
                                     "\n" + p_("Total force", "Array(double)",
                                               fmt([0, 0, -SPRUNG_WEIGHT])), 0), 0),
         block("Centrifugal loads", block("rolling wheel", "\n".join([
@@ -355,6 +373,16 @@ def deck(case, p, sleepers=True):
                 p_("Velocity", "Array(double)", fmt([SPEED, 0, 0])),
                 p_("Angular velocity", "Array(double)", fmt([0, omega, 0])),
                 p_("Fixed rotations", "string", "xz")]
+    if hold is not None:
+        # The steady-state check's hold: the box carries the hub and web (not the rim, not the
+        # axle beyond the hub) at the rolling speed and, through a flywheel's inertia, a
+        # constant spin.
+        axle_box = [p_("Node set", "string", carried),
+                    p_("Reference point", "Array(double)", fmt([x0, 0, AXIS_HEIGHT])),
+                    p_("Inertia", "Array(double)", fmt([0, HOLD_INERTIA, 0])),
+                    p_("Angular velocity", "Array(double)", fmt([0, spin, 0])),
+                    p_("Motion x", "string", f"{SPEED!r} * t"),
+                    p_("Fixed rotations", "string", "xz")]
     axle_box.append(p_("Motion y", "string", motion) if motion else
                     p_("Fixed translations", "string", "y"))
     bodies = [block("axle box", "\n".join(axle_box), 0),
@@ -401,7 +429,7 @@ def deck(case, p, sleepers=True):
         block("Initial velocity", block("wheel", "\n".join([
             p_("Node set", "string", "wheel.all"),
             p_("Translation", "Array(double)", fmt([SPEED, 0, 0])),
-            p_("Angular velocity", "Array(double)", fmt([0, omega, 0])),
+            p_("Angular velocity", "Array(double)", fmt([0, spin, 0])),
             p_("Axis point", "Array(double)", fmt([x0, 0, AXIS_HEIGHT]))]), 0), 0),
         block("Prescribed motion", ends(held_xy) + held_sleepers, 0),
         block("Discrete parts", "\n".join([
@@ -545,6 +573,10 @@ def main():
     parser.add_argument("--transitions", type=float, nargs="*",
                         help="the wheel's Transition radii (m; none: uniform slices through "
                              "hub and axle; full 0.30 0.12)")
+    parser.add_argument("--hold-creepage", type=float,
+                        help="the steady-state check: the axle box carries hub and web at the "
+                             "rolling speed and spins them at (1 + this) x free rolling, with no "
+                             "torque (give --torque 0 too)")
     parser.add_argument("--penalty", type=float,
                         help="the contact's Penalty factor in the roll step (default 1)")
     parser.add_argument("--patch-times", type=float, nargs="+",
@@ -557,7 +589,7 @@ def main():
     if args.case:
         p = dict(FULL if args.scale == "full" else DEMO)
         for key in list(p) + ["sleepers", "modes", "torque", "kinematics", "approach_size",
-                              "transitions", "penalty"]:
+                              "transitions", "penalty", "hold_creepage"]:
             value = getattr(args, key, None)
             if value is not None:
                 p[key] = value

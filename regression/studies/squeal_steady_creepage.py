@@ -35,6 +35,7 @@ one core of the shared machine (0.42 us per element-step):
     /usr/bin/python3 regression/studies/squeal_steady_creepage.py [build/bin/railfe] \\
         [--sizes 3] [--end-time 0.004] [--window 0.003 0.004] [--reuse] [--replot]
 """
+import json
 import math
 import os
 import sys
@@ -58,6 +59,34 @@ CSV = os.path.join(ROOT, "docs", "data", "squeal_steady_creepage.csv")
 HISTORIES = os.path.join(ROOT, "docs", "data", "squeal_steady_creepage_histories.csv")
 CURVES = os.path.join(ROOT, "docs", "data", "squeal_steady_creepage_exact_curve.csv")
 PNG = os.path.join(ROOT, "docs", "img", "squeal_steady_creepage.png")
+HOLD = None  # --hold XI: the held runs (make_squeal_decks.py --hold-creepage), their own files
+
+
+def held(path):
+    """`path`, or its "_held" twin for the held runs."""
+    stem, extension = os.path.splitext(path)
+    return path if HOLD is None else stem + "_held" + extension
+
+
+def run_pair(railfe, work, size, timeline, reuse):
+    """The driven run and its free twin: by the torque (the scene's model), or with --hold, both
+    held (hub, web and axle at the rolling speed, spun at 1 + XI and 1 x free rolling)."""
+    if HOLD is None:
+        return (convergence.one_run(railfe, work, size, True, timeline.variant(), reuse),
+                convergence.one_run(railfe, work, size, False, timeline.variant(), reuse))
+    runs = []
+    for name, xi in ((f"held_{size:g}mm", HOLD), (f"held_{size:g}mm_free", 0.0)):
+        text = convergence.deck_text(
+            convergence.options(size) + ["--case", "1", "--kinematics", "--torque", "0",
+                                         "--hold-creepage", repr(xi)] + timeline.variant())
+        results = os.path.join(work, name + "_results")
+        if (reuse and os.path.exists(os.path.join(results, "summary.json"))
+                and open(os.path.join(work, name + ".xml")).read() == text):
+            with open(os.path.join(results, "summary.json")) as summary:
+                runs.append((results, json.load(summary)))
+        else:
+            runs.append(run_deck(railfe, text, work, name))
+    return runs
 
 
 class Timeline:
@@ -115,9 +144,8 @@ def patches(results):
 def measure(railfe, work, size, timeline, reuse):
     """One mesh, the driven run and its free twin: (row, history columns for the chart)."""
     span, halves = timeline.window, timeline.halves
-    results, summary = convergence.one_run(railfe, work, size, True, timeline.variant(), reuse)
-    free_results, free_summary = convergence.one_run(railfe, work, size, False,
-                                                     timeline.variant(), reuse)
+    (results, summary), (free_results, free_summary) = run_pair(railfe, work, size, timeline,
+                                                               reuse)
     roll = step_section(summary, "roll")
     history = csv_rows(os.path.join(results, "roll_contact_wheel-rail.csv"))
     free_history = csv_rows(os.path.join(free_results, "roll_contact_wheel-rail.csv"))
@@ -167,9 +195,11 @@ def measure(railfe, work, size, timeline, reuse):
                 "wheel_speed_m_per_s": driven["speed"], "omega_rad_per_s": driven["omega"],
                 "wheel_acceleration_m_per_s2": slope(time, driven["speed_series"], span),
                 "angular_acceleration_rad_per_s2": slope(time, driven["omega_series"], span)})
-    # The torque balance, T - r0 Fx = I d(omega)/dt: the polar moment it asks for.
-    row["torque_balance_inertia_kg_m2"] = ((TORQUE - ROLLING_RADIUS * row["longitudinal_force_N"])
-                                           / row["angular_acceleration_rad_per_s2"])
+    # The torque balance, T - r0 Fx = I d(omega)/dt: the polar moment it asks for (held: none).
+    row["torque_balance_inertia_kg_m2"] = (
+        (TORQUE - ROLLING_RADIUS * row["longitudinal_force_N"]) /
+        row["angular_acceleration_rad_per_s2"] if HOLD is None else float("nan"))
+    row["hold_creepage"] = float("nan") if HOLD is None else HOLD
     fx = running_mean([float(r["time_s"]) for r in history],
                       [float(r["tangential_1_N"]) for r in history])
     free_xi = running_mean(*free["series"])
@@ -247,9 +277,9 @@ def plot():
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    rows = typed_rows(CSV, [])
-    histories = typed_rows(HISTORIES, [])
-    curves = typed_rows(CURVES, [])
+    rows = typed_rows(held(CSV), [])
+    histories = typed_rows(held(HISTORIES), [])
+    curves = typed_rows(held(CURVES), [])
     time = [1e3 * r["time_s"] for r in histories]
     fig, axes = plt.subplots(1, 3, figsize=(18, 5.6))
 
@@ -324,7 +354,7 @@ def plot():
     fig.suptitle(f"Squeal scene, case 1 at demo scale, {1e3 * end:g} ms: the steady part against "
                  "the exact steady-rolling solver")
     fig.tight_layout()
-    fig.savefig(PNG, dpi=100)
+    fig.savefig(held(PNG), dpi=100)
 
 
 def main():
@@ -337,7 +367,12 @@ def main():
     parser.add_argument("--reuse", action="store_true",
                         help="read the runs already in --work (same deck) instead of running "
                              "them again")
+    parser.add_argument("--hold", type=float,
+                        help="the held runs at this creepage (make_squeal_decks.py "
+                             "--hold-creepage), written to the files' _held twins")
     args = parser.parse_args()
+    global HOLD
+    HOLD = args.hold
     if not args.replot:
         timeline = Timeline(args.end_time, args.window)
         rows, columns, curves = [], {}, {}
@@ -346,9 +381,9 @@ def main():
             rows.append(compare(args.railfe, args.work, row))
             columns.update(history)
             curves[f"exact_fx_{size:g}mm_N"] = creep_curve(args.railfe, args.work, row)
-        write_rows(CSV, merge(CSV, rows, "zone_element_size_mm")[::-1])
-        write_rows(HISTORIES, table(HISTORIES, "time_s", columns))
-        write_rows(CURVES, table(CURVES, "creepage", curves))
+        write_rows(held(CSV), merge(held(CSV), rows, "zone_element_size_mm")[::-1])
+        write_rows(held(HISTORIES), table(held(HISTORIES), "time_s", columns))
+        write_rows(held(CURVES), table(held(CURVES), "creepage", curves))
     plot()
 
 
