@@ -66,12 +66,22 @@ FREE_WINDOW = (0.2e-3, 1.2e-3)
 PREWIND_PER_NEWTON = 2e-4 / 650.0  # rad/N: the case's pre-wind over its creep force
 
 
+# --coarse: below issue 15's table (b/h = 8.5), towards the squeal demo's a/h = 2.2, so that its
+# steady check has a tolerance for its mesh. The geometry script wants even element counts in its
+# bands, so the bands' lengths are nudged to whole even numbers of elements. At 1 mm (b/h 2.1)
+# the squeeze's CG + MueLu breaks down: not run.
+COARSE_SIZES_MM = [0.5, 0.75]
+COARSE_BANDS = {0.75: ["-setnumber", "xr", "27e-3", "-setnumber", "ds", "1.5e-3"]}
+COARSE_CSV = os.path.join(ROOT, "docs", "data", "contact_rolling_coarse.csv")
+
+
 def mesh_file(size_mm, work):
     """Generates the case's mesh with contact-zone elements of size_mm (Gmsh); returns its path."""
     path = os.path.join(work, f"rolling_cylinder_h{size_mm:g}mm.msh")
     if not os.path.exists(path):
-        subprocess.run(["gmsh", "-3", "-format", "msh41", "-setnumber", "h", repr(size_mm * 1e-3),
-                        "-o", path, GEO], check=True, capture_output=True)
+        subprocess.run(["gmsh", "-3", "-format", "msh41", "-setnumber", "h", repr(size_mm * 1e-3)]
+                       + COARSE_BANDS.get(size_mm, []) + ["-o", path, GEO], check=True,
+                       capture_output=True)
     return path
 
 
@@ -94,6 +104,12 @@ def deck_text(mesh, factor, creepage=CASE_CREEPAGE, free=False):
     old = '<Parameter name="Penalty factor" type="double" value="1"/>'
     assert text.count(old) == 2
     text = text.replace(old, f'<Parameter name="Penalty factor" type="double" value="{factor!r}"/>')
+    if mesh.endswith("h0.75mm.msh"):
+        # On these facets the squeeze's linearisation stalls at 5.2e-4 of the force, just above
+        # the case's 5e-4 (the limit its message names): 2e-3 accepts it.
+        old_tolerance = '<Parameter name="Contact tolerance" type="double" value="5e-4"/>'
+        assert text.count(old_tolerance) == 1
+        text = text.replace(old_tolerance, old_tolerance.replace("5e-4", "2e-3"))
     text = text.replace('<Parameter name="End time" type="double" value="8e-4"/>',
                         f'<Parameter name="End time" type="double" value="{END_TIME!r}"/>')
     text = text.replace('value="{6e-4, 8e-4}"', f'value="{{{END_TIME!r}}}"')
@@ -268,7 +284,23 @@ def plot(rows):
 def main():
     parser = study_parser(__doc__.split("\n")[0], "/tmp/railfe_contact_rolling_speed_accuracy",
                           ROOT)
+    parser.add_argument("--coarse", action="store_true",
+                        help="only the coarse meshes (h = 0.5, 0.75 mm; f = 1, hub creepages "
+                             "0.9e-3 and the case's), written to "
+                             "docs/data/contact_rolling_coarse.csv")
     args = parser.parse_args()
+    if args.coarse:
+        os.makedirs(args.work, exist_ok=True)
+        with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+            free = {size: pool.submit(free_rolling, size, args.work, args.railfe)
+                    for size in COARSE_SIZES_MM}
+            rows = [pool.submit(measure, size, 1.0, creepage, free[size].result()[0],
+                                args.work, args.railfe)
+                    for size in COARSE_SIZES_MM for creepage in (0.9e-3, CASE_CREEPAGE)]
+            rows = [row.result() for row in rows]
+        write_rows(COARSE_CSV, rows)
+        print(f"wrote {COARSE_CSV}")
+        return
     if args.replot:
         rows = typed_rows(CSV, ("elements", "steps"))
         plot(rows)

@@ -331,8 +331,9 @@ def plot():
                       color="red", linestyle="none", markersize=7,
                       label=f"{size:g} mm: the window's half {half}")
     fig.colorbar(dots, ax=axes[2], label="time (ms; the path: 0.3 ms running means)")
-    axes[0].axhline(1e-3 * TORQUE_FORCE, color="black", linestyle="-.", linewidth=0.8,
-                    label="torque / r0 (the wheel also speeds up: not the steady Fx)")
+    if HOLD is None:
+        axes[0].axhline(1e-3 * TORQUE_FORCE, color="black", linestyle="-.", linewidth=0.8,
+                        label="torque / r0 (the wheel also speeds up: not the steady Fx)")
     axes[0].set_ylabel("creep force Fx (kN; 0.3 ms running mean)")
     axes[0].set_title("creep force")
     axes[0].set_ylim(0, 32)
@@ -351,8 +352,10 @@ def plot():
     axes[2].grid(alpha=0.3)
     axes[2].legend(fontsize=7, loc="upper left")
     end = max(r["end_time_s"] for r in rows)
-    fig.suptitle(f"Squeal scene, case 1 at demo scale, {1e3 * end:g} ms: the steady part against "
-                 "the exact steady-rolling solver")
+    held_text = ("" if HOLD is None else f", held: hub and web at V, spun at (1 + {HOLD:g}) x "
+                 "free rolling")
+    fig.suptitle(f"Squeal scene, case 1 at demo scale, {1e3 * end:g} ms{held_text}: the steady "
+                 "part against the exact steady-rolling solver")
     fig.tight_layout()
     fig.savefig(held(PNG), dpi=100)
 
