@@ -4,6 +4,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "framework/mesh/mesh_checks.hpp"
 #include "framework/mesh/revolve.hpp"
 #include "framework/mesh/revolve_detail.hpp"
 
@@ -38,20 +39,6 @@ std::vector<std::vector<std::size_t>> level_slices(
     slices.push_back(level);
   }
   return slices;
-}
-
-// Sign of the hex's Jacobian at its centre (nodes 0-3 one face, 4-7 the opposite one).
-double centre_jacobian(const std::vector<double>& x, const GlobalIndex* nodes) {
-  double d[3][3] = {};
-  static const int sign[3][8] = {
-      {-1, 1, 1, -1, -1, 1, 1, -1}, {-1, -1, 1, 1, -1, -1, 1, 1}, {-1, -1, -1, -1, 1, 1, 1, 1}};
-  for (int a = 0; a < 8; ++a)
-    for (int i = 0; i < 3; ++i)
-      for (int c = 0; c < 3; ++c)
-        d[i][c] += sign[i][a] * x[3 * static_cast<std::size_t>(nodes[a]) + c];
-  return d[0][0] * (d[1][1] * d[2][2] - d[1][2] * d[2][1]) -
-         d[0][1] * (d[1][0] * d[2][2] - d[1][2] * d[2][0]) +
-         d[0][2] * (d[1][0] * d[2][1] - d[1][1] * d[2][0]);
 }
 
 class CoarseningSweep {
@@ -141,7 +128,11 @@ class CoarseningSweep {
   // A template's pieces are turned right side out here; a plain slice must already be, as its
   // faces are numbered for the side sets like revolve()'s.
   void add_hex(ElementBlock& block, GlobalIndex nodes[8], bool may_turn) {
-    if (centre_jacobian(mesh_.coordinates, nodes) < 0) {
+    double x[8][3];
+    for (int a = 0; a < 8; ++a)
+      for (int c = 0; c < 3; ++c)
+        x[a][c] = mesh_.coordinates[3 * static_cast<std::size_t>(nodes[a]) + c];
+    if (hex8_jacobian_quality(x) < 0) {
       if (!may_turn)
         broken("a slice turned inside out");
       for (int a = 0; a < 4; ++a)
