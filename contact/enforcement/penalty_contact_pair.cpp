@@ -76,6 +76,62 @@ bool crosses_free_edge(const std::vector<std::array<int, 4>>& faces,
           !edge_shared(faces, candidates, face, n[0], n[1]));
 }
 
+// (mass, stiffness) of the springs of one side, one per cell of a 0.1 % grid in both: the cell's
+// smallest mass and largest stiffness (a step from them lies below every member's), so that a
+// mesh's repeated faces and nodes count once and a lone spring keeps its own values.
+using MassStiffness = std::vector<std::pair<double, double>>;
+
+MassStiffness distinct(const MassStiffness& springs) {
+  const double grid = std::log(1.001);
+  std::vector<std::pair<std::pair<long long, long long>, std::pair<double, double>>> cells;
+  for (const auto& [mass, stiffness] : springs)
+    cells.push_back({{std::llround(std::floor(std::log(mass) / grid)),
+                      std::llround(std::floor(std::log(stiffness) / grid))},
+                     {mass, stiffness}});
+  std::sort(cells.begin(), cells.end());
+  MassStiffness out;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    if (i > 0 && cells[i].first == cells[i - 1].first) {
+      out.back().first = std::min(out.back().first, cells[i].second.first);
+      out.back().second = std::max(out.back().second, cells[i].second.second);
+    } else {
+      out.push_back(cells[i].second);
+    }
+  }
+  return out;
+}
+
+// The smallest 2√(m_r / k) over every slave node on every face: m_r the reduced mass of the two,
+// k the face's stiffness or, with slave caps, the smaller of it and the node's.
+double smallest_spring_step(const PenaltyPairGeometry& geometry) {
+  MassStiffness faces, slaves;
+  for (std::size_t f = 0; f < geometry.master_faces.size(); ++f) {
+    double mass = 0;
+    for (int node : geometry.master_faces[f])
+      mass += 0.25 * geometry.mass[node];
+    if (geometry.face_stiffness[f] > 0 && mass > 0)
+      faces.emplace_back(mass, geometry.face_stiffness[f]);
+  }
+  for (std::size_t s = 0; s < geometry.slave_nodes.size(); ++s) {
+    const double mass = geometry.mass[geometry.slave_nodes[s]];
+    if (mass > 0)
+      slaves.emplace_back(mass,
+                          geometry.slave_stiffness.empty() ? 1e300 : geometry.slave_stiffness[s]);
+  }
+  if (geometry.slave_stiffness.empty() && !slaves.empty()) {
+    // Without caps only the lightest slave node matters.
+    slaves = {*std::min_element(slaves.begin(), slaves.end())};
+  }
+  faces = distinct(faces);
+  slaves = distinct(slaves);
+  double smallest = 1e300;  // of m_r / k
+  for (const auto& [slave_mass, slave_stiffness] : slaves)
+    for (const auto& [face_mass, face_stiffness] : faces)
+      smallest = std::min(smallest, slave_mass * face_mass / (slave_mass + face_mass) /
+                                        std::min(slave_stiffness, face_stiffness));
+  return smallest < 1e300 ? 2 * std::sqrt(smallest) : 1e300;
+}
+
 }  // namespace
 
 PenaltyContactPair::PenaltyContactPair(PenaltyPairGeometry geometry, PenaltyPairSettings settings)
@@ -83,23 +139,15 @@ PenaltyContactPair::PenaltyContactPair(PenaltyPairGeometry geometry, PenaltyPair
   const auto n_faces = geometry_.master_faces.size();
   if (geometry_.face_stiffness.size() != n_faces ||
       geometry_.slave_area.size() != geometry_.slave_nodes.size() ||
+      (!geometry_.slave_stiffness.empty() &&
+       geometry_.slave_stiffness.size() != geometry_.slave_nodes.size()) ||
       geometry_.mass.size() != static_cast<std::size_t>(geometry_.n_surface_nodes))
     throw std::invalid_argument("contact pair '" + settings_.name + "': inconsistent sizes");
   if (settings_.search_interval < 1)
     throw std::invalid_argument("contact pair '" + settings_.name + "': search interval < 1");
   search_ = std::make_unique<BucketSearch>(geometry_.master_faces);
   slaves_.resize(geometry_.slave_nodes.size());
-  double lightest = 1e300;
-  for (int node : geometry_.slave_nodes)
-    lightest = std::min(lightest, geometry_.mass[node]);
-  for (std::size_t f = 0; f < n_faces; ++f) {
-    double face_mass = 0;
-    for (int node : geometry_.master_faces[f])
-      face_mass += 0.25 * geometry_.mass[node];
-    const double reduced = lightest * face_mass / (lightest + face_mass);
-    if (geometry_.face_stiffness[f] > 0)
-      stable_step_ = std::min(stable_step_, 2 * std::sqrt(reduced / geometry_.face_stiffness[f]));
-  }
+  stable_step_ = smallest_spring_step(geometry_);
   // Central difference with a viscous damper of fraction ζ: ω Δt ≤ 2 (√(1 + ζ²) − ζ).
   const double zeta = settings_.damping_fraction;
   stable_step_ *= std::sqrt(1 + zeta * zeta) - zeta;
@@ -188,7 +236,7 @@ void PenaltyContactPair::evaluate(const double* x, const double* du, double dt, 
     const int slave_node = geometry_.slave_nodes[s];
     const auto& face = geometry_.master_faces[contact.face];
     const std::array<double, 4> shape = quad_shape_functions(contact.xi, contact.eta);
-    const double k = geometry_.face_stiffness[contact.face];
+    const double k = stiffness(s, contact.face);
     const Vector& n = contact.normal;
 
     // Relative increment of the slave over the master point during the step.

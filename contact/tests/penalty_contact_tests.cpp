@@ -3,7 +3,9 @@
 // by return mapping sticks (elastic, f_t = −k Δe) below μN and slides at μN above it,
 // dissipating μN times the slip; the velocity-dependent law gives μ(Δe/Δt).
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -15,11 +17,13 @@ namespace {
 constexpr double kStiffness = 2e8;  // N/m
 
 // Surface nodes 0-3: the unit square z = 0 (normal +z); node 4: the slave.
-PenaltyContactPair one_face_pair(FrictionLaw friction = {}, double damping = 0) {
+PenaltyContactPair one_face_pair(FrictionLaw friction = {}, double damping = 0,
+                                 std::vector<double> slave_stiffness = {}) {
   PenaltyPairGeometry geometry;
   geometry.n_surface_nodes = 5;
   geometry.master_faces = {{0, 1, 2, 3}};
   geometry.face_stiffness = {kStiffness};
+  geometry.slave_stiffness = std::move(slave_stiffness);
   geometry.slave_nodes = {4};
   geometry.slave_area = {1e-4};
   geometry.mass = {1, 1, 1, 1, 0.5};
@@ -112,10 +116,63 @@ TEST(PenaltyContact, VelocityDependentCoefficientFollowsTheSlipSpeed) {
   EXPECT_NEAR(pair.totals().friction_bound, mu * normal, 1e-9 * normal);
 }
 
+// Springs that agree to 0.1 % are grouped (the group's lightest mass, stiffest spring); lone
+// springs, as in these tests, keep their own values, so the step is exact.
+void expect_step(const PenaltyContactPair& pair, double exact) {
+  EXPECT_NEAR(pair.stable_step(), exact, 1e-12 * exact);
+}
+
 TEST(PenaltyContact, CriticalStepIsTwiceRootOfReducedMassOverStiffness) {
   PenaltyContactPair pair = one_face_pair();
   // Slave 0.5 kg, face mean 1 kg: reduced mass 1/3 kg.
-  EXPECT_NEAR(pair.stable_step(), 2 * std::sqrt((1.0 / 3) / kStiffness), 1e-15);
+  expect_step(pair, 2 * std::sqrt((1.0 / 3) / kStiffness));
+}
+
+// A slave node's cap (LS-DYNA's smaller of node and segment): a softer slave sets the force and
+// the step; a stiffer one changes nothing.
+TEST(PenaltyContact, SlaveCapTakesTheSofterOfNodeAndFace) {
+  for (const double slave : {0.25 * kStiffness, 4 * kStiffness}) {
+    PenaltyContactPair pair = one_face_pair({}, 0, {slave});
+    const double k = std::min(slave, kStiffness);
+    EXPECT_EQ(pair.stiffness(0, 0), k);
+    const auto x = positions(0.3, 0.4, -1e-5);
+    std::vector<double> du(15, 0.0), force(15, 0.0);
+    pair.evaluate(x.data(), du.data(), 1e-7, 0, force.data());
+    EXPECT_NEAR(force[14], k * 1e-5, 1e-9 * k * 1e-5) << "slave stiffness " << slave;
+    EXPECT_NEAR(pair.totals().stored_energy, 0.5 * k * 1e-10, 1e-9 * k * 1e-10);
+    // Reduced mass 1/3 (slave 0.5, face 1).
+    expect_step(pair, 2 * std::sqrt((1.0 / 3) / k));
+  }
+}
+
+TEST(PenaltyContact, CappedStepIsTheSmallestOverEveryNodeOnEveryFace) {
+  // Face 0 light and soft, face 1 heavy and stiff; slave 8 light and soft, slave 9 heavy and
+  // stiff. The pairing of the lightest slave with the stiffest face (the uncapped rule) never
+  // happens at that stiffness: slave 8 caps it.
+  PenaltyPairGeometry geometry;
+  geometry.n_surface_nodes = 10;
+  geometry.master_faces = {{0, 1, 2, 3}, {4, 5, 6, 7}};
+  geometry.face_stiffness = {1e8, 1e10};
+  geometry.slave_stiffness = {2e8, 5e9};
+  geometry.slave_nodes = {8, 9};
+  geometry.slave_area = {1e-4, 1e-4};
+  geometry.mass = {0.2, 0.2, 0.2, 0.2, 3, 3, 3, 3, 0.1, 2};
+  PenaltyPairSettings settings;
+  settings.name = "two by two";
+  const PenaltyContactPair pair(geometry, settings);
+  double exact = 1e300;
+  const double face_mass[2] = {0.2, 3}, slave_mass[2] = {0.1, 2};
+  for (int s = 0; s < 2; ++s)
+    for (int f = 0; f < 2; ++f) {
+      const double reduced = slave_mass[s] * face_mass[f] / (slave_mass[s] + face_mass[f]);
+      const double k = std::min(geometry.slave_stiffness[s], geometry.face_stiffness[f]);
+      exact = std::min(exact, 2 * std::sqrt(reduced / k));
+    }
+  expect_step(pair, exact);
+  // Without the caps, the lightest slave on the stiffest face.
+  geometry.slave_stiffness.clear();
+  const PenaltyContactPair uncapped(geometry, settings);
+  expect_step(uncapped, 2 * std::sqrt((0.1 * 3 / 3.1) / 1e10));
 }
 
 TEST(PenaltyContact, DampingNeverPullsTheSurfacesTogether) {

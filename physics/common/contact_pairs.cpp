@@ -29,6 +29,10 @@ double element_volume(const Mesh& mesh, GlobalIndex element) {
   return volume;
 }
 
+double bulk_modulus(const ElasticMaterial& material) {
+  return material.young / (3 * (1 - 2 * material.poisson));
+}
+
 int surface_index(const std::vector<GlobalIndex>& surface, GlobalIndex node) {
   return static_cast<int>(std::lower_bound(surface.begin(), surface.end(), node) - surface.begin());
 }
@@ -42,6 +46,13 @@ ContactPairs::ContactPairs(const std::vector<ContactPairSpec>& specs,
   for (const ContactPairSpec& spec : specs_) {
     surfaces_.push_back(contact_surface_nodes(spec, partition.mesh(), deck, path));
     const ContactSurfaceNodes& surface = surfaces_.back();
+    std::array<double, 2> elastic{};  // mean shear modulus and Poisson's ratio of its faces
+    for (const GlobalIndex element : surface.master_elements) {
+      const ElasticMaterial& material = materials.of_block(partition.mesh().block_of(element));
+      elastic[0] += material.lame().mu / static_cast<double>(surface.master_elements.size());
+      elastic[1] += material.poisson / static_cast<double>(surface.master_elements.size());
+    }
+    master_elastic_.push_back(elastic);
     surface_.insert(surface_.end(), surface.slave_nodes.begin(), surface.slave_nodes.end());
     for (const auto& face : surface.master_faces)
       surface_.insert(surface_.end(), face.begin(), face.end());
@@ -130,10 +141,33 @@ void ContactPairs::initialise(const std::vector<double>& owned_mass, double soli
       } else {
         const GlobalIndex element = surface.master_elements[f];
         const ElasticMaterial& material = materials_.of_block(mesh.block_of(element));
-        const double bulk = material.young / (3 * (1 - 2 * material.poisson));
-        stiffness = spec.penalty_factor * bulk * area * area / element_volume(mesh, element);
+        stiffness = spec.penalty_factor * bulk_modulus(material) * area * area /
+                    element_volume(mesh, element);
       }
       geometry.face_stiffness.push_back(stiffness);
+    }
+    if (spec.slave_cap) {
+      // A quarter of each slave face's f K A^2 / V to each of its nodes: on matching cubes a
+      // node gets what the face under it has, so only coarser master faces are capped.
+      geometry.slave_stiffness.assign(surface.slave_nodes.size(), 0.0);
+      for (std::size_t f = 0; f < surface.slave_faces.size(); ++f) {
+        const GlobalIndex element = surface.slave_elements[f];
+        const auto& nodes = surface.slave_faces[f];
+        const double* c = mesh.coordinates.data();
+        const double area =
+            quad_area(c + 3 * nodes[0], c + 3 * nodes[1], c + 3 * nodes[2], c + 3 * nodes[3]);
+        const ElasticMaterial& material = materials_.of_block(mesh.block_of(element));
+        const double quarter = 0.25 * spec.penalty_factor * bulk_modulus(material) * area * area /
+                               element_volume(mesh, element);
+        for (GlobalIndex node : nodes)
+          geometry.slave_stiffness[std::lower_bound(surface.slave_nodes.begin(),
+                                                    surface.slave_nodes.end(), node) -
+                                   surface.slave_nodes.begin()] += quarter;
+      }
+      // A node of a node set on no face of the set has no stiffness of its own: no cap.
+      for (double& k : geometry.slave_stiffness)
+        if (!(k > 0))
+          k = 1e300;
     }
     PenaltyPairSettings settings;
     settings.name = spec.name;

@@ -8,6 +8,7 @@
 /// boundary, and the friction history is the same on every rank. The cost is the surface's, not
 /// the model's; the exchange grows with the surface and the rank count (docs/theory.md).
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,9 @@ class ContactPairs {
   GlobalIndex surface_node(int i) const { return surface_[i]; }
   /// Local index of surface node \p i on this rank, −1 where another rank owns it.
   LocalIndex owned_node(int i) const { return owned_[i]; }
+  /// Mean shear modulus (Pa) and Poisson's ratio of the elements under pair \p p's master
+  /// faces.
+  const std::array<double, 2>& master_elastic(std::size_t p) const { return master_elastic_[p]; }
   /// Whether pair \p p has had a node in contact since the start.
   bool ever_touched(std::size_t p) const { return touched_[p]; }
   /// Friction histories and dissipated work, for checkpoints.
@@ -80,6 +84,7 @@ class ContactPairs {
   std::vector<PenaltyContactPair> pairs_;
   std::vector<double> exchange_, positions_, increments_, forces_;
   std::vector<bool> touched_;
+  std::vector<std::array<double, 2>> master_elastic_;  // per pair: G (Pa), nu
   double seconds_ = 0;
 };
 

@@ -25,13 +25,18 @@ ParameterSpec contact_pair_parameters(ContactUse use) {
   spec.text("Slave side set", "", "Slave nodes: the nodes of these faces (the finer surface).");
   spec.text("Slave node set", "", "Slave nodes given directly (give this or Slave side set).");
   spec.required_text("Master side set", "Master faces (quadrilaterals, outward normals).");
+  std::vector<Choice> stiffnesses = {
+      {"bulk modulus", "k = f K A^2 / V of the element under the master face"},
+      {"bulk modulus, softer side",
+       "the smaller of the master face's f K A^2 / V and the slave node's own (a quarter of "
+       "f K A^2 / V of each slave face around it), as LS-DYNA's segment-based default: a coarse "
+       "master face does not stiffen the fine slave nodes on it, nor shorten the step"}};
   if (dynamic)
-    spec.choice("Penalty stiffness", "bulk modulus",
-                {{"bulk modulus", "k = f K A^2 / V of the element under the master face"},
-                 {"nodal mass",
-                  "k = f m / dt^2, m the reduced mass of slave node and face, dt "
-                  "the solids' step at the start"}},
-                "How the penalty stiffness is set.");
+    stiffnesses.push_back({"nodal mass",
+                           "k = f m / dt^2, m the reduced mass of slave node and face, dt the "
+                           "solids' step at the start"});
+  spec.choice("Penalty stiffness", "bulk modulus", stiffnesses,
+              "How the penalty stiffness is set.");
   spec.real("Penalty factor", 0.1,
             dynamic ? "f of the penalty stiffness."
                     : "f of the penalty stiffness k = f K A^2 / V (bulk-modulus form).",
@@ -102,8 +107,10 @@ std::vector<ContactPairSpec> read_contact_pairs(const Teuchos::ParameterList& st
                         "exactly one of Slave side set and Slave node set");
     pair.master_side_set = entry.get<std::string>("Master side set");
     pair.penalty_factor = entry.get<double>("Penalty factor");
+    const std::string stiffness = entry.get<std::string>("Penalty stiffness");
+    pair.mass_penalty = stiffness == "nodal mass";
+    pair.slave_cap = stiffness == "bulk modulus, softer side";
     if (dynamic) {
-      pair.mass_penalty = entry.get<std::string>("Penalty stiffness") == "nodal mass";
       pair.damping_fraction = entry.get<double>("Damping fraction");
       pair.search_interval = entry.get<int>("Search interval");
     }

@@ -22,6 +22,7 @@ struct ContactPairSpec {
   std::string slave_node_set;   ///< slave nodes from a node set ("" if a side set is given)
   std::string master_side_set;  ///< the master faces
   bool mass_penalty = false;    ///< k = f m / Δt² (else the bulk-modulus form f K A² / V)
+  bool slave_cap = false;       ///< bulk modulus: also cap k at the slave node's own f K A² / V
   double penalty_factor = 0.1;  ///< f
   double damping_fraction = 0;  ///< normal damping, fraction of critical
   FrictionLaw friction;         ///< friction law

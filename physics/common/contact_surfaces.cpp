@@ -51,11 +51,13 @@ ContactSurfaceNodes contact_surface_nodes(const ContactPairSpec& pair, const Mes
   }
 
   // The faces that give the slave nodes their areas.
-  std::vector<std::array<GlobalIndex, 4>> slave_faces;
+  std::vector<std::array<GlobalIndex, 4>>& slave_faces = surfaces.slave_faces;
   if (!pair.slave_side_set.empty()) {
     for (const Side& side :
-         mesh.side_set(pair.slave_side_set, deck, where + "/Slave side set").sides)
+         mesh.side_set(pair.slave_side_set, deck, where + "/Slave side set").sides) {
       slave_faces.push_back(face_nodes(mesh, side));
+      surfaces.slave_elements.push_back(side.element);
+    }
     for (const auto& face : slave_faces)
       surfaces.slave_nodes.insert(surfaces.slave_nodes.end(), face.begin(), face.end());
     std::sort(surfaces.slave_nodes.begin(), surfaces.slave_nodes.end());
@@ -71,8 +73,10 @@ ContactSurfaceNodes contact_surface_nodes(const ContactPairSpec& pair, const Mes
       if (std::all_of(face.begin(), face.end(), [&](GlobalIndex node) {
             return std::binary_search(surfaces.slave_nodes.begin(), surfaces.slave_nodes.end(),
                                       node);
-          }))
+          })) {
         slave_faces.push_back(face);
+        surfaces.slave_elements.push_back(side.element);
+      }
     }
   }
   surfaces.slave_area.assign(surfaces.slave_nodes.size(), 0.0);

@@ -19,6 +19,8 @@ struct ContactSurfaceNodes {
   std::vector<double> slave_area;                        ///< tributary area of each (m²)
   std::vector<std::array<GlobalIndex, 4>> master_faces;  ///< outward node order
   std::vector<GlobalIndex> master_elements;              ///< the hex8 under each face
+  std::vector<std::array<GlobalIndex, 4>> slave_faces;   ///< the faces that give the areas
+  std::vector<GlobalIndex> slave_elements;               ///< the hex8 under each slave face
 };
 
 /// The surfaces of \p pair on \p mesh (reference coordinates). A slave node's area is a quarter

@@ -17,7 +17,8 @@ double dot(const Vector& a, const Vector& b) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-// The contact frame of a pair: n, t1, t2 (see the file comment).
+}  // namespace
+
 std::array<Vector, 3> contact_frame(const PenaltyContactPair& pair) {
   Vector n = pair.totals().normal;
   Vector t1 = pair.settings().longitudinal;
@@ -31,8 +32,6 @@ std::array<Vector, 3> contact_frame(const PenaltyContactPair& pair) {
                      n[0] * t1[1] - n[1] * t1[0]};
   return {n, t1, t2};
 }
-
-}  // namespace
 
 const std::vector<std::string>& contact_history_columns() {
   static const std::vector<std::string> columns = {

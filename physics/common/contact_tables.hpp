@@ -7,6 +7,7 @@
 /// frame is n (the force-weighted mean normal, master towards slave), t1 (the pair's
 /// Longitudinal direction projected onto the contact plane) and t2 = n x t1.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,9 @@ namespace railfe {
 class ContactPairs;
 class CsvWriter;
 class PenaltyContactPair;
+
+/// The contact frame of \p pair at its last evaluation: n, t1, t2 (see the file comment).
+std::array<std::array<double, 3>, 3> contact_frame(const PenaltyContactPair& pair);
 
 /// Column names of a pair's history file.
 const std::vector<std::string>& contact_history_columns();

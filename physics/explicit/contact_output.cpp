@@ -1,7 +1,10 @@
 #include "physics/explicit/contact_output.hpp"
 
+#include <sstream>
+
 #include "framework/output/csv_writer.hpp"
 #include "framework/output/output_directory.hpp"
+#include "framework/output/run_summary.hpp"
 #include "physics/common/contact_pairs.hpp"
 #include "physics/common/contact_tables.hpp"
 #include "physics/explicit/explicit_settings.hpp"
@@ -26,6 +29,7 @@ ContactRecorder::ContactRecorder(const ExplicitSettings& settings, const Explici
         output.staging_path(patch_name(p, k, ".png"));
     }
   next_patch_.assign(settings.contact_pairs.size(), 0);
+  flexibility_.resize(settings.contact_pairs.size());
 }
 
 ContactRecorder::~ContactRecorder() = default;
@@ -45,6 +49,13 @@ void ContactRecorder::record(bool force_row) {
     }
     if (!due)
       continue;
+    if (pair.settings().friction.kind != FrictionLaw::Kind::none &&
+        pair.totals().normal_force > flexibility_[p].normal_force) {
+      const auto& [shear_modulus, poisson] = contact.master_elastic(p);
+      const PenaltyFlexibility now = railfe::penalty_flexibility(pair, shear_modulus, poisson);
+      if (now.patch > 0)
+        flexibility_[p] = now;
+    }
     const std::vector<double> row = contact_history_row(solver_.time(), pair);
     histories_[p]->write_row(row);
     if (root_)
@@ -80,13 +91,42 @@ std::vector<std::array<std::string, 2>> ContactRecorder::patch_charts() const {
   return charts;
 }
 
-std::vector<std::string> ContactRecorder::untouched_pairs() const {
-  std::vector<std::string> names;
+std::vector<std::string> ContactRecorder::summarise(RunSummary& summary,
+                                                    const std::string& section) const {
+  std::vector<std::string> warnings;
   const ContactPairs& contact = solver_.contact();
-  for (std::size_t p = 0; p < contact.pairs().size(); ++p)
+  for (std::size_t p = 0; p < contact.pairs().size(); ++p) {
+    const std::string& name = contact.pairs()[p].settings().name;
     if (!contact.ever_touched(p))
-      names.push_back(contact.pairs()[p].settings().name);
-  return names;
+      warnings.push_back("contact pair '" + name +
+                         "' never touched: its surfaces did not come within reach (check the "
+                         "sets and the parts' placement)");
+    const PenaltyFlexibility& flexibility = flexibility_[p];
+    if (!(flexibility.patch > 0))
+      continue;
+    const std::string key = "contact " + name + ": penalty tangential flexibility / patch's";
+    summary.add(section, key, flexibility.ratio());
+    std::ostringstream axes;
+    axes.precision(3);
+    axes << 1e3 * flexibility.rolling_semi_axis << ", " << 1e3 * flexibility.lateral_semi_axis
+         << " mm";
+    summary.add(section, "contact " + name + ": patch semi-axes a, b at the largest normal force",
+                axes.str());
+    if (flexibility.ratio() > kFlexibilityWarning) {
+      std::ostringstream warning;
+      warning.precision(2);
+      warning << "contact pair '" << name << "': the penalty layer's tangential flexibility is "
+              << flexibility.ratio() << " x the patch's own (Kalker's 8a/(3 C11 G), a = "
+              << 1e3 * flexibility.rolling_semi_axis
+              << " mm at the largest normal force): where the patch sticks the creep force is "
+                 "low by about "
+              << 100 * flexibility.ratio() / (1 + flexibility.ratio())
+              << " %; raise the Penalty factor (its step falls as 1/sqrt(f): least with "
+                 "Penalty stiffness 'bulk modulus, softer side') or refine the contact surfaces";
+      warnings.push_back(warning.str());
+    }
+  }
+  return warnings;
 }
 
 std::vector<double> ContactRecorder::state() const {

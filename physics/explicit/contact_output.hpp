@@ -13,12 +13,19 @@
 #include <string>
 #include <vector>
 
+#include "physics/common/penalty_flexibility.hpp"
+
 namespace railfe {
 
 class CsvWriter;
 class ExplicitSolver;
 class OutputDirectory;
+class RunSummary;
 struct ExplicitSettings;
+
+/// Penalty flexibility ratio above which a run warns (about this fraction of the creep force
+/// lost where the patch sticks).
+constexpr double kFlexibilityWarning = 0.05;
 
 /// The contact outputs of one explicit step.
 class ContactRecorder {
@@ -33,8 +40,14 @@ class ContactRecorder {
   /// Staging paths of the patch files written so far and of their charts, for pairs that ask for
   /// charts: {csv, png} each.
   std::vector<std::array<std::string, 2>> patch_charts() const;
-  /// Names of the pairs that never touched (for a warning).
-  std::vector<std::string> untouched_pairs() const;
+  /// Adds each frictional pair's penalty_flexibility() to \p summary under \p section, and
+  /// returns the warnings: pairs that never touched, and pairs whose penalty layer costs more
+  /// than kFlexibilityWarning of the creep force where the patch sticks.
+  std::vector<std::string> summarise(RunSummary& summary, const std::string& section) const;
+  /// Per pair, the penalty layer's tangential flexibility against the patch's own at the history
+  /// row with the largest normal force that had a patch to compare with (ratio 0: none, or a
+  /// frictionless pair). Rows before a restart are not seen.
+  const std::vector<PenaltyFlexibility>& penalty_flexibility() const { return flexibility_; }
   /// Rows written so far and the next patch, for checkpoints.
   std::vector<double> state() const;
   /// Restores state() and rewrites the rows (rank 0).
@@ -52,6 +65,7 @@ class ContactRecorder {
   std::vector<std::unique_ptr<CsvWriter>> histories_;
   std::vector<std::vector<std::vector<double>>> rows_;  // per pair
   std::vector<std::size_t> next_patch_;                 // per pair: index of the next patch time
+  std::vector<PenaltyFlexibility> flexibility_;         // per pair
   long long last_step_ = -1;
 };
 

@@ -336,10 +336,7 @@ void ExplicitStep::run(StepContext& context) {
     summary.add(section, "contact critical step", solver.contact_stable_step(), "s");
     for (const auto& [csv, png] : recorder.contact().patch_charts())
       draw_chart(context, section, "contact_patch_map.py", {csv, png});
-    for (const std::string& name : recorder.contact().untouched_pairs()) {
-      const std::string warning = "contact pair '" + name +
-                                  "' never touched: its surfaces did not come within reach "
-                                  "(check the sets and the parts' placement)";
+    for (const std::string& warning : recorder.contact().summarise(summary, section)) {
       summary.add(section, "warning", warning);
       if (comm.is_root())
         std::fprintf(stderr, "railfe: warning: %s: %s\n", path.c_str(), warning.c_str());

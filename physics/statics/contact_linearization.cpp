@@ -33,7 +33,7 @@ ContactLinearization linearize_contact(const ContactPairs& contact, const DofMap
           contact.surface_node(face[1]), contact.surface_node(face[2]),
           contact.surface_node(face[3])};
       const std::array<double, 5> weight = {1, -shape[0], -shape[1], -shape[2], -shape[3]};
-      const double k = geometry.face_stiffness[slave.face];
+      const double k = pair.stiffness(s, slave.face);
       const auto& n = slave.normal;
       double reference_gap = 0;
       for (int a = 0; a < 5; ++a)

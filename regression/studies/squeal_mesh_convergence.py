@@ -280,7 +280,8 @@ def exact(railfe, work, row):
     results, _ = run_deck(railfe, text, work, f"exact_{row['zone_element_size_mm']:g}mm")
     forward = [r for r in csv_rows(os.path.join(results, "exact_forces.csv"))
                if r["theory"] == "exact"]
-    if any(float(r["Fx_N"]) < 0 for r in forward):
+    # (Only the run's own creepage: the spread's low end can cross zero on a steady run.)
+    if float(forward[0]["Fx_N"]) < 0:
         raise RuntimeError("the exact solver's sign convention is not the one assumed")
     inverse = csv_rows(os.path.join(results, "inverse_inverse.csv"))[0]
     at, spin, before, slope, low, high = forward

@@ -60,12 +60,20 @@ HISTORIES = os.path.join(ROOT, "docs", "data", "squeal_steady_creepage_histories
 CURVES = os.path.join(ROOT, "docs", "data", "squeal_steady_creepage_exact_curve.csv")
 PNG = os.path.join(ROOT, "docs", "img", "squeal_steady_creepage.png")
 HOLD = None  # --hold XI: the held runs (make_squeal_decks.py --hold-creepage), their own files
+PENALTY = 1.0  # the held run's Penalty factor (squeal_steady_penalty.py); the free twin keeps 1
+SOFTER_SIDE = False  # the held run's Penalty stiffness "bulk modulus, softer side"
 
 
 def held(path):
     """`path`, or its "_held" twin for the held runs."""
     stem, extension = os.path.splitext(path)
     return path if HOLD is None else stem + "_held" + extension
+
+
+def held_name(size):
+    """The held run's name: its size, and its penalty where not the default."""
+    return (f"held_{size:g}mm" + ("" if PENALTY == 1 else f"_f{PENALTY:g}") +
+            ("_softer" if SOFTER_SIDE else ""))
 
 
 def run_pair(railfe, work, size, timeline, reuse):
@@ -75,10 +83,13 @@ def run_pair(railfe, work, size, timeline, reuse):
         return (convergence.one_run(railfe, work, size, True, timeline.variant(), reuse),
                 convergence.one_run(railfe, work, size, False, timeline.variant(), reuse))
     runs = []
-    for name, xi in ((f"held_{size:g}mm", HOLD), (f"held_{size:g}mm_free", 0.0)):
+    for name, xi, penalty, softer in ((held_name(size), HOLD, PENALTY, SOFTER_SIDE),
+                                      (f"held_{size:g}mm_free", 0.0, 1.0, False)):
         text = convergence.deck_text(
             convergence.options(size) + ["--case", "1", "--kinematics", "--torque", "0",
-                                         "--hold-creepage", repr(xi)] + timeline.variant())
+                                         "--hold-creepage", repr(xi)] + timeline.variant() +
+            ([] if penalty == 1 else ["--penalty", f"{penalty:g}"]) +
+            (["--penalty-stiffness", "bulk modulus, softer side"] if softer else []))
         results = os.path.join(work, name + "_results")
         if (reuse and os.path.exists(os.path.join(results, "summary.json"))
                 and open(os.path.join(work, name + ".xml")).read() == text):
@@ -200,6 +211,8 @@ def measure(railfe, work, size, timeline, reuse):
         (TORQUE - ROLLING_RADIUS * row["longitudinal_force_N"]) /
         row["angular_acceleration_rad_per_s2"] if HOLD is None else float("nan"))
     row["hold_creepage"] = float("nan") if HOLD is None else HOLD
+    row["penalty_factor"] = PENALTY
+    row["softer_side"] = float(SOFTER_SIDE)
     fx = running_mean([float(r["time_s"]) for r in history],
                       [float(r["tangential_1_N"]) for r in history])
     free_xi = running_mean(*free["series"])
