@@ -29,8 +29,12 @@ double element_volume(const Mesh& mesh, GlobalIndex element) {
   return volume;
 }
 
-double bulk_modulus(const ElasticMaterial& material) {
-  return material.young / (3 * (1 - 2 * material.poisson));
+// K A^2 / V of a face of area \p area on hex8 \p element: the bulk-modulus penalty for f = 1.
+double bulk_face_stiffness(const Mesh& mesh, const MaterialTable& materials, GlobalIndex element,
+                           double area) {
+  const ElasticMaterial& material = materials.of_block(mesh.block_of(element));
+  const double bulk = material.young / (3 * (1 - 2 * material.poisson));
+  return bulk * area * area / element_volume(mesh, element);
 }
 
 int surface_index(const std::vector<GlobalIndex>& surface, GlobalIndex node) {
@@ -127,10 +131,7 @@ void ContactPairs::initialise(const std::vector<double>& owned_mass, double soli
         face_mass += 0.25 * mass[face[a]];
       }
       geometry.master_faces.push_back(face);
-      const double* c = mesh.coordinates.data();
-      const auto& nodes = surface.master_faces[f];
-      const double area =
-          quad_area(c + 3 * nodes[0], c + 3 * nodes[1], c + 3 * nodes[2], c + 3 * nodes[3]);
+      const double area = face_area(mesh, surface.master_faces[f]);
       size_sum += std::sqrt(area);
       double stiffness;
       if (spec.mass_penalty) {
@@ -139,10 +140,8 @@ void ContactPairs::initialise(const std::vector<double>& owned_mass, double soli
         const double reduced = lightest * face_mass / (lightest + face_mass);
         stiffness = spec.penalty_factor * reduced / (solid_step * solid_step);
       } else {
-        const GlobalIndex element = surface.master_elements[f];
-        const ElasticMaterial& material = materials_.of_block(mesh.block_of(element));
-        stiffness = spec.penalty_factor * bulk_modulus(material) * area * area /
-                    element_volume(mesh, element);
+        stiffness = spec.penalty_factor *
+                    bulk_face_stiffness(mesh, materials_, surface.master_elements[f], area);
       }
       geometry.face_stiffness.push_back(stiffness);
     }
@@ -151,18 +150,12 @@ void ContactPairs::initialise(const std::vector<double>& owned_mass, double soli
       // node gets what the face under it has, so only coarser master faces are capped.
       geometry.slave_stiffness.assign(surface.slave_nodes.size(), 0.0);
       for (std::size_t f = 0; f < surface.slave_faces.size(); ++f) {
-        const GlobalIndex element = surface.slave_elements[f];
         const auto& nodes = surface.slave_faces[f];
-        const double* c = mesh.coordinates.data();
-        const double area =
-            quad_area(c + 3 * nodes[0], c + 3 * nodes[1], c + 3 * nodes[2], c + 3 * nodes[3]);
-        const ElasticMaterial& material = materials_.of_block(mesh.block_of(element));
-        const double quarter = 0.25 * spec.penalty_factor * bulk_modulus(material) * area * area /
-                               element_volume(mesh, element);
+        const double quarter = 0.25 * spec.penalty_factor *
+                               bulk_face_stiffness(mesh, materials_, surface.slave_elements[f],
+                                                   face_area(mesh, nodes));
         for (GlobalIndex node : nodes)
-          geometry.slave_stiffness[std::lower_bound(surface.slave_nodes.begin(),
-                                                    surface.slave_nodes.end(), node) -
-                                   surface.slave_nodes.begin()] += quarter;
+          geometry.slave_stiffness[surface_index(surface.slave_nodes, node)] += quarter;
       }
       // A node of a node set on no face of the set has no stiffness of its own: no cap.
       for (double& k : geometry.slave_stiffness)

@@ -23,12 +23,12 @@ std::array<GlobalIndex, 4> face_nodes(const Mesh& mesh, const Side& side) {
   return face;
 }
 
+}  // namespace
+
 double face_area(const Mesh& mesh, const std::array<GlobalIndex, 4>& face) {
   const double* x = mesh.coordinates.data();
   return quad_area(x + 3 * face[0], x + 3 * face[1], x + 3 * face[2], x + 3 * face[3]);
 }
-
-}  // namespace
 
 double quad_area(const double* a, const double* b, const double* c, const double* d) {
   double p[3], q[3];

@@ -38,6 +38,9 @@ std::string start_penetration_problem(const ContactPairSpec& pair,
                                       const ContactSurfaceNodes& surface, const Mesh& mesh,
                                       const std::vector<double>& positions);
 
+/// Area of the face \p face of \p mesh in the reference coordinates (quad_area).
+double face_area(const Mesh& mesh, const std::array<GlobalIndex, 4>& face);
+
 /// Area of the quadrilateral through \p a, \p b, \p c, \p d: half the cross product of its
 /// diagonals (exact for a plane face).
 double quad_area(const double* a, const double* b, const double* c, const double* d);

@@ -52,7 +52,7 @@ void ContactRecorder::record(bool force_row) {
     if (pair.settings().friction.kind != FrictionLaw::Kind::none &&
         pair.totals().normal_force > flexibility_[p].normal_force) {
       const auto& [shear_modulus, poisson] = contact.master_elastic(p);
-      const PenaltyFlexibility now = railfe::penalty_flexibility(pair, shear_modulus, poisson);
+      const PenaltyFlexibility now = penalty_flexibility(pair, shear_modulus, poisson);
       if (now.patch > 0)
         flexibility_[p] = now;
     }

@@ -40,14 +40,12 @@ class ContactRecorder {
   /// Staging paths of the patch files written so far and of their charts, for pairs that ask for
   /// charts: {csv, png} each.
   std::vector<std::array<std::string, 2>> patch_charts() const;
-  /// Adds each frictional pair's penalty_flexibility() to \p summary under \p section, and
-  /// returns the warnings: pairs that never touched, and pairs whose penalty layer costs more
-  /// than kFlexibilityWarning of the creep force where the patch sticks.
+  /// Adds each frictional pair's penalty flexibility (penalty_flexibility() at the history row
+  /// with the largest normal force that had a patch to compare with; rows before a restart are
+  /// not seen) to \p summary under \p section, and returns the warnings: pairs that never
+  /// touched, and pairs whose penalty layer costs more than kFlexibilityWarning of the creep
+  /// force where the patch sticks.
   std::vector<std::string> summarise(RunSummary& summary, const std::string& section) const;
-  /// Per pair, the penalty layer's tangential flexibility against the patch's own at the history
-  /// row with the largest normal force that had a patch to compare with (ratio 0: none, or a
-  /// frictionless pair). Rows before a restart are not seen.
-  const std::vector<PenaltyFlexibility>& penalty_flexibility() const { return flexibility_; }
   /// Rows written so far and the next patch, for checkpoints.
   std::vector<double> state() const;
   /// Restores state() and rewrites the rows (rank 0).
