@@ -49,6 +49,11 @@ struct StepContext {
   Progress progress(const std::string& label, double total) const {
     return Progress(step_name + ": " + label, total, model.comm(), quiet, progress_interval);
   }
+  /// A progress reporter for iterations that stop when they converge, at most \p most:
+  /// "[<step>: <label>] 3 done (at most 30), 41.2 s elapsed, 13.7 s each".
+  Progress iteration_progress(const std::string& label, int most) const {
+    return Progress(step_name + ": " + label, most, model.comm(), quiet, progress_interval, true);
+  }
 };
 
 /// One step of an analysis.

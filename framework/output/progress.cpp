@@ -5,11 +5,12 @@
 namespace railfe {
 
 Progress::Progress(std::string label, double total, const Communicator& comm, bool quiet,
-                   double interval_seconds)
+                   double interval_seconds, bool total_is_bound)
     : label_(std::move(label)),
       total_(total),
       active_(comm.is_root() && !quiet),
-      interval_(interval_seconds) {}
+      interval_(interval_seconds),
+      total_is_bound_(total_is_bound) {}
 
 void Progress::update(double done) {
   if (!active_)
@@ -21,6 +22,9 @@ void Progress::update(double done) {
   const double fraction = total_ > 0 ? done / total_ : 1.0;
   if (fraction <= 0) {
     std::printf("[%s] started, %.1f s elapsed\n", label_.c_str(), elapsed);
+  } else if (total_is_bound_) {
+    std::printf("[%s] %.0f done (at most %.0f), %.1f s elapsed, %.1f s each\n", label_.c_str(),
+                done, total_, elapsed, elapsed / done);
   } else {
     const double remaining = elapsed * (1.0 - fraction) / fraction;
     std::printf("[%s] %5.1f%% done, %.1f s elapsed, about %.0f s to go\n", label_.c_str(),

@@ -12,9 +12,12 @@ namespace railfe {
 /// Reports progress of one phase at most every interval_seconds.
 class Progress {
  public:
-  /// A phase called \p label with \p total units of work. Prints nothing if \p quiet.
+  /// A phase called \p label with \p total units of work. Prints nothing if \p quiet. With
+  /// \p total_is_bound, \p total is only the most there can be (iterations that stop when they
+  /// converge): the lines give the count and the time per unit, never a percentage or a time to
+  /// go that would assume all of them.
   Progress(std::string label, double total, const Communicator& comm, bool quiet,
-           double interval_seconds = 5.0);
+           double interval_seconds = 5.0, bool total_is_bound = false);
   /// Records that \p done units are complete; prints when the interval has passed.
   void update(double done);
   /// Prints the final line with the total time.
@@ -25,6 +28,7 @@ class Progress {
   double total_;
   bool active_;
   double interval_;
+  bool total_is_bound_;
   Stopwatch clock_;
   double last_print_ = 0;
 };

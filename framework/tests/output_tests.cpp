@@ -18,6 +18,7 @@
 #include "framework/output/field_gather.hpp"
 #include "framework/output/finite_check.hpp"
 #include "framework/output/output_directory.hpp"
+#include "framework/output/progress.hpp"
 #include "framework/output/run_summary.hpp"
 
 namespace railfe {
@@ -55,6 +56,26 @@ TEST(Csv, RoundTripsDoublesExactly) {
   }
   comm.barrier();
   EXPECT_EQ(read(dir / "h.csv"), "time_s,force_N\n9.9999999999999995e-08,-2.5\n");
+}
+
+// Work of known size gets a percentage and a time to go; iterations that stop when they
+// converge get their count and the time each, never a time to go that assumes all of them.
+TEST(Progress, IterationsUpToABoundGiveNoTimeToGo) {
+  const Communicator comm;
+  if (!comm.is_root())
+    GTEST_SKIP() << "rank 0 prints";
+  testing::internal::CaptureStdout();
+  Progress work("assembly", 10, comm, false, 0.0);
+  work.update(5);
+  Progress iterations("contact iterations", 30, comm, false, 0.0, true);
+  iterations.update(1);
+  const std::string printed = testing::internal::GetCapturedStdout();
+  EXPECT_NE(printed.find("[assembly]  50.0% done"), std::string::npos) << printed;
+  EXPECT_NE(printed.find("to go"), std::string::npos) << printed;
+  EXPECT_NE(printed.find("[contact iterations] 1 done (at most 30)"), std::string::npos) << printed;
+  const std::string iteration_line = printed.substr(printed.find("[contact iterations]"));
+  EXPECT_EQ(iteration_line.find("to go"), std::string::npos) << printed;
+  EXPECT_EQ(iteration_line.find('%'), std::string::npos) << printed;
 }
 
 TEST(RunSummary, TextAndJson) {

@@ -185,6 +185,57 @@ void ContactPairs::initialise(const std::vector<double>& owned_mass, double soli
   }
 }
 
+bool ContactPairs::scale_masses(std::vector<double>& owned_mass) {
+  std::vector<ContactMassScaling>& result = mass_scaling_;
+  result.assign(pairs_.size(), ContactMassScaling{});
+  bool scaled = false;
+  for (std::size_t p = 0; p < pairs_.size(); ++p) {
+    const double target = specs_[p].mass_scaling_step;
+    const PenaltyContactPair& pair = pairs_[p];
+    const PenaltyPairGeometry& geometry = pair.geometry();
+    if (!(target > pair.stable_step()) || geometry.face_stiffness.empty())
+      continue;
+    scaled = true;
+    result[p].step_before = pair.stable_step();
+    const double zeta = specs_[p].damping_fraction;
+    const double half = 0.5 * target / (std::sqrt(1 + zeta * zeta) - zeta);
+    const double q = half * half;
+    const double stiffest_face =
+        *std::max_element(geometry.face_stiffness.begin(), geometry.face_stiffness.end());
+    const double stiffest_slave =
+        geometry.slave_stiffness.empty()
+            ? 1e300
+            : *std::max_element(geometry.slave_stiffness.begin(), geometry.slave_stiffness.end());
+    // The mass each surface node needs, 0 where it is not in the pair.
+    std::vector<double> needed(surface_.size(), 0.0);
+    for (std::size_t s = 0; s < geometry.slave_nodes.size(); ++s) {
+      const double k = geometry.slave_stiffness.empty()
+                           ? stiffest_face
+                           : std::min(geometry.slave_stiffness[s], stiffest_face);
+      double& m = needed[geometry.slave_nodes[s]];
+      m = std::max(m, 2 * q * k);
+    }
+    for (std::size_t f = 0; f < geometry.master_faces.size(); ++f) {
+      const double k = std::min(geometry.face_stiffness[f], stiffest_slave);
+      for (int node : geometry.master_faces[f])
+        needed[node] = std::max(needed[node], 2 * q * k);
+    }
+    double added = 0;
+    long long raised = 0;
+    for (std::size_t i = 0; i < surface_.size(); ++i) {
+      const LocalIndex node = owned_[i];
+      if (node < 0 || !(owned_mass[node] < needed[i]))
+        continue;
+      added += needed[i] - owned_mass[node];
+      owned_mass[node] = needed[i];
+      ++raised;
+    }
+    result[p].added_mass = partition_.comm().sum(added);
+    result[p].nodes = partition_.comm().sum(raised);
+  }
+  return scaled;
+}
+
 void ContactPairs::add_forces(const double* x, const double* u, const double* du, double dt,
                               double* residual) {
   if (pairs_.empty())

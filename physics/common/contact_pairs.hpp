@@ -22,6 +22,13 @@ namespace railfe {
 class MaterialTable;
 class MeshPartition;
 
+/// What selective mass scaling gave one contact pair (ContactPairs::scale_masses()).
+struct ContactMassScaling {
+  double step_before = 0;  ///< the pair's critical step before (s); 0 where it was not scaled
+  double added_mass = 0;   ///< mass added to its nodes, over all ranks (kg)
+  long long nodes = 0;     ///< nodes made heavier, over all ranks
+};
+
 /// All contact pairs of one step.
 class ContactPairs {
  public:
@@ -40,6 +47,16 @@ class ContactPairs {
   /// refuses such reference positions. Collective.
   void initialise(const std::vector<double>& owned_mass, double solid_step, const double* x,
                   const double* u);
+  /// Selective mass scaling of every pair whose Mass scaling step T lies above its critical
+  /// step: raises \p owned_mass (per owned node) of its slave and master-face nodes to 2 q k̂,
+  /// q = (T / 2d)² (d the damper's factor √(1 + ζ²) − ζ), k̂ the stiffest spring the node can
+  /// feel in the pair. A node-face pair's reduced mass is at least half the lighter of its nodes,
+  /// so each spring then has m_r / k ≥ q and the pair's step is at least T. Call after
+  /// initialise(), and initialise() again after it (mass_scaling() keeps what it did).
+  /// Returns whether any pair was scaled. Collective.
+  bool scale_masses(std::vector<double>& owned_mass);
+  /// What scale_masses() did, one entry per pair (empty before it).
+  const std::vector<ContactMassScaling>& mass_scaling() const { return mass_scaling_; }
   /// Adds the contact forces at the state (\p x + \p u, step increments \p du of owned nodes,
   /// step \p dt; 0 at the start) to \p residual (owned nodes). Collective.
   void add_forces(const double* x, const double* u, const double* du, double dt, double* residual);
@@ -84,6 +101,7 @@ class ContactPairs {
   std::vector<PenaltyContactPair> pairs_;
   std::vector<double> exchange_, positions_, increments_, forces_;
   std::vector<bool> touched_;
+  std::vector<ContactMassScaling> mass_scaling_;
   std::vector<std::array<double, 2>> master_elastic_;  // per pair: G (Pa), nu
   double seconds_ = 0;
 };

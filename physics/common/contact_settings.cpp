@@ -42,6 +42,16 @@ ParameterSpec contact_pair_parameters(ContactUse use) {
                     : "f of the penalty stiffness k = f K A^2 / V (bulk-modulus form).",
             "", Range::open_closed(0, 100));
   if (dynamic) {
+    spec.real("Mass scaling step", 0.0,
+              "Selective mass scaling of the pair (as the solids' Mass scaling step): where its "
+              "critical step is below this one, its slave nodes and master-face nodes get the "
+              "mass that raises it there (each node to 2 q k of the stiffest spring it can feel, "
+              "q = (this / 2)^2, so every node-face pair's reduced mass suffices); 0 = none. The "
+              "mass added is reported in the summary, with a warning above 1 % of the total. Not "
+              "with Penalty stiffness 'nodal mass', whose springs grow with the masses.",
+              "s", Range::non_negative());
+    spec.only_when("Penalty stiffness", {"bulk modulus", "bulk modulus, softer side"},
+                   {"Mass scaling step"});
     spec.real("Damping fraction", 0.0, "Normal contact damping as a fraction of critical.", "",
               Range::closed(0, 1));
     spec.choice("Friction", "none",
@@ -111,6 +121,7 @@ std::vector<ContactPairSpec> read_contact_pairs(const Teuchos::ParameterList& st
     pair.mass_penalty = stiffness == "nodal mass";
     pair.slave_cap = stiffness == "bulk modulus, softer side";
     if (dynamic) {
+      pair.mass_scaling_step = entry.get<double>("Mass scaling step");
       pair.damping_fraction = entry.get<double>("Damping fraction");
       pair.search_interval = entry.get<int>("Search interval");
     }

@@ -25,9 +25,11 @@ struct ContactPairSpec {
   bool slave_cap = false;       ///< bulk modulus: also cap k at the slave node's own f K A² / V
   double penalty_factor = 0.1;  ///< f
   double damping_fraction = 0;  ///< normal damping, fraction of critical
-  FrictionLaw friction;         ///< friction law
-  int search_interval = 10;     ///< steps between rebuilds of the search
-  double search_margin = 0;     ///< m; 0 = half the mean master face size
+  /// s: the pair's nodes get mass until its critical step reaches this (0 = none; explicit only)
+  double mass_scaling_step = 0;
+  FrictionLaw friction;                         ///< friction law
+  int search_interval = 10;                     ///< steps between rebuilds of the search
+  double search_margin = 0;                     ///< m; 0 = half the mean master face size
   std::array<double, 3> longitudinal{1, 0, 0};  ///< t₁ of the results' frame
   double penetration_limit = 0.1;   ///< deepest start penetration, fraction of the face size
   std::vector<double> patch_times;  ///< times at which patch fields are written (s)

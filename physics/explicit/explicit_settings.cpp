@@ -221,7 +221,9 @@ ParameterSpec explicit_parameters() {
              Range::non_negative());
   solid.choice(
       "Kernel", "batched",
-      {{"batched", "8 elements per SIMD batch where the CPU has AVX-512, else scalar"},
+      {{"batched",
+        "8 elements per SIMD batch where the CPU has AVX-512, 4 where it has AVX2 and "
+        "FMA, else scalar"},
        {"scalar", "one element at a time (the reference the batched kernel is tested on)"}},
       "How one-point elements are evaluated; both give the same forces to round-off.");
   solid.only_when("Integration", {"one point"},

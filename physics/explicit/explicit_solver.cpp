@@ -143,7 +143,16 @@ void ExplicitSolver::evaluate_forces(double dt) {
   contact_->add_forces(x_.data(), u_.data(), du_.data(), dt, residual_.data());
   solid_stable_step_ =
       std::min(comm_.min(totals_.stable_step) * step_calibration_, discrete_->stable_step());
-  stable_step_ = std::min(solid_stable_step_, contact_->stable_step());
+  stable_step_ = coupled_stable_step(solid_stable_step_, contact_->stable_step());
+}
+
+double coupled_stable_step(double solids, double contact) {
+  constexpr double kEqualLimits = 0.83;  // the factor where the two limits are equal
+  constexpr double kApart = 1.5;         // from this ratio of the larger to the smaller: none
+  const double smaller = std::min(solids, contact), larger = std::max(solids, contact);
+  if (!(larger < kApart * smaller))
+    return smaller;  // also +inf contact (no pairs)
+  return smaller * (kEqualLimits + (1 - kEqualLimits) * (larger / smaller - 1) / (kApart - 1));
 }
 
 std::vector<double> ExplicitSolver::scale_small_elements(double target) {
@@ -274,6 +283,9 @@ void ExplicitSolver::initialise(const double* start) {
           ? settings_.time_step
           : settings_.safety_factor * comm_.min(element_step) * step_calibration_;
   contact_->initialise(mass_, solid_step, x_.data(), u_.data());
+  // Heavier contact nodes change the springs' steps, not their stiffness: set them up again.
+  if (contact_->scale_masses(mass_))
+    contact_->initialise(mass_, solid_step, x_.data(), u_.data());
   prepare_forces(0);
   evaluate_forces(0);
   discrete_->correct(0, 0, gravity_now_, nodes, comm_);
@@ -421,7 +433,17 @@ double ExplicitSolver::total_mass() const {
 }
 
 std::string ExplicitSolver::critical_location() const {
-  if (contact_->stable_step() <= stable_step_)
+  const double contact = contact_->stable_step();
+  if (stable_step_ < std::min(contact, solid_stable_step_) * (1 - 1e-12)) {
+    std::ostringstream text;
+    text.precision(3);
+    text << "contact pair '" << contact_->critical_pair() << "' and the solids together (their "
+         << "limits " << contact << " and " << solid_stable_step_ << " s are close: the "
+         << "coupled limit is taken as " << stable_step_ / std::min(contact, solid_stable_step_)
+         << " of the smaller; a Penalty factor that moves the contact's limit away raises it)";
+    return text.str();
+  }
+  if (contact <= stable_step_)
     return "contact pair '" + contact_->critical_pair() +
            "' (2 sqrt(m / k) of its penalty springs; a smaller Penalty factor raises it)";
   if (discrete_->stable_step() <= stable_step_)

@@ -33,6 +33,21 @@ std::string mass_scaling_warning(const ExplicitSolver& solver) {
   return text.str();
 }
 
+// A warning for each contact pair whose Mass scaling step added over 1 % of the model's mass,
+// "" where none did.
+std::string contact_mass_scaling_warning(const ExplicitSolver& solver) {
+  std::ostringstream text;
+  text.precision(3);
+  const auto& scaling = solver.contact().mass_scaling();
+  for (std::size_t p = 0; p < scaling.size(); ++p)
+    if (scaling[p].added_mass > 0.01 * solver.total_mass())
+      text << (text.tellp() > 0 ? "; " : "") << "contact pair '" << solver.contact().specs()[p].name
+           << "': Mass scaling step added " << scaling[p].added_mass << " kg to "
+           << scaling[p].nodes << " nodes, " << 100 * scaling[p].added_mass / solver.total_mass()
+           << " % of the model's mass: it changes the dynamics (lower its Mass scaling step)";
+  return text.str();
+}
+
 std::string seconds_text(double value) {
   std::ostringstream text;
   text.precision(4);
@@ -205,6 +220,9 @@ void ExplicitStep::run(StepContext& context) {
                                        : "";
   if (!mass_warning.empty() && comm.is_root())
     std::fprintf(stderr, "railfe: warning: %s: %s\n", path.c_str(), mass_warning.c_str());
+  const std::string contact_mass_warning = contact_mass_scaling_warning(solver);
+  if (!contact_mass_warning.empty() && comm.is_root())
+    std::fprintf(stderr, "railfe: warning: %s: %s\n", path.c_str(), contact_mass_warning.c_str());
   const double initial_stable_step = solver.stable_step();
   if (!(initial_stable_step > 0) || !std::isfinite(initial_stable_step))
     throw RunError(path + ": no stable step could be found (degenerate elements or no mass?)");
@@ -334,6 +352,17 @@ void ExplicitStep::run(StepContext& context) {
     summary.add(section, "contact pairs", static_cast<double>(settings.contact_pairs.size()));
     summary.add(section, "solids' stable step at end", solver.solid_stable_step(), "s");
     summary.add(section, "contact critical step", solver.contact_stable_step(), "s");
+    const auto& scaling = solver.contact().mass_scaling();
+    for (std::size_t p = 0; p < scaling.size(); ++p) {
+      if (!(scaling[p].step_before > 0))
+        continue;
+      const std::string name = "contact " + settings.contact_pairs[p].name + ": mass scaling: ";
+      summary.add(section, name + "critical step before", scaling[p].step_before, "s");
+      summary.add(section, name + "nodes made heavier", static_cast<double>(scaling[p].nodes));
+      summary.add(section, name + "mass added", scaling[p].added_mass, "kg");
+    }
+    if (!contact_mass_warning.empty())
+      summary.add(section, "warning", contact_mass_warning);
     for (const auto& [csv, png] : recorder.contact().patch_charts())
       draw_chart(context, section, "contact_patch_map.py", {csv, png});
     for (const std::string& warning : recorder.contact().summarise(summary, section)) {
@@ -383,6 +412,7 @@ void ExplicitStep::run(StepContext& context) {
   summary.add(section, "time: setup", setup_seconds, "s");
   summary.add(section, "time: stepping", loop_seconds, "s");
   summary.add(section, "time: stepping, CPU of rank 0", loop_cpu_seconds, "s");
+  summary.add(section, "solid kernel", solid_kernel_name(settings.kernel));
   summary.add(section, "time per element-step (wall x ranks)",
               1e6 * loop_seconds * comm.n_ranks() / element_steps, "us");
   if (!settings.contact_pairs.empty()) {

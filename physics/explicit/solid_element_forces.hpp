@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// The arithmetic of the explicit hex8 kernel, written once for one element (T = double, the
-/// scalar kernel) and for kLanes elements at once (T = Lanes, the batched kernel): the forces of
+/// scalar kernel) and for W elements at once (T = Lanes<W>, the batched kernel): the forces of
 /// one integration point (St. Venant–Kirchhoff, bulk viscosity), the Flanagan–Belytschko
 /// hourglass forces, and the current stable step. Internal to the explicit module.
 

@@ -155,11 +155,27 @@ SolidElements build_solid_elements(const MeshPartition& partition, const Materia
   return elements;
 }
 
+std::string solid_kernel_name(const SolidKernelSettings& settings) {
+  if (settings.full_integration)
+    return "scalar (full integration)";
+  if (!settings.batched)
+    return "scalar";
+  switch (batched_kernel_lanes()) {
+    case 8:
+      return "batched, 8 lanes (AVX-512)";
+    case 4:
+      return "batched, 4 lanes (AVX2)";
+    default:
+      return "scalar (this CPU has neither AVX-512 nor AVX2)";
+  }
+}
+
 SolidForceTotals add_internal_forces(const SolidElements& elements,
                                      const SolidKernelSettings& settings, const double* coordinates,
                                      const double* u, const double* v, double* forces) {
   if (settings.batched && elements.n_points == 1 && batched_kernel_available())
-    return add_internal_forces_batched(elements, settings, coordinates, u, v, forces);
+    return add_internal_forces_batched(elements, settings, coordinates, u, v, forces,
+                                       batched_kernel_lanes());
   SolidForceTotals totals;
   double strain = 0, hourglass_energy = 0, hourglass_power = 0, viscous_power = 0;
   const int n_points = elements.n_points;

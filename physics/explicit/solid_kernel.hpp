@@ -33,9 +33,9 @@ struct SolidKernelSettings {
   double hourglass_coefficient = 0.03;                 ///< κ of the hourglass form
   double bulk_linear = 0.06;                           ///< linear bulk viscosity coefficient
   double bulk_quadratic = 1.5;                         ///< quadratic bulk viscosity coefficient
-  /// One-point elements in SIMD batches of kLanes (add_internal_forces_batched()) where the CPU
-  /// has AVX-512 (batched_kernel_available()); false: one at a time, the scalar reference. Full
-  /// integration is always scalar.
+  /// One-point elements in SIMD batches (add_internal_forces_batched()) of 8 where the CPU has
+  /// AVX-512, of 4 where it has AVX2 (batched_kernel_lanes()); false: one at a time, the scalar
+  /// reference. Full integration is always scalar.
   bool batched = true;
 };
 
@@ -91,20 +91,34 @@ SolidForceTotals add_internal_forces(const SolidElements& elements,
                                      const SolidKernelSettings& settings, const double* coordinates,
                                      const double* u, const double* v, double* forces);
 
-/// Whether this CPU runs the batched kernel (it has AVX-512; elsewhere the scalar kernel is
-/// faster and add_internal_forces() uses it).
-bool batched_kernel_available();
+/// Whether this CPU runs a batched pass of \p lanes elements: 8 (kWideLanes) where it has
+/// AVX-512, 4 (kNarrowLanes) where it has AVX2 and FMA.
+bool batched_kernel_supports(int lanes);
 
-/// add_internal_forces() for one-point elements, kLanes elements at a time in SIMD lanes
+/// The widest batch this CPU runs (8 or 4), or 0 where it runs none (there the scalar kernel is
+/// faster and add_internal_forces() uses it).
+int batched_kernel_lanes();
+
+/// Whether this CPU runs the batched kernel at all (batched_kernel_lanes() > 0).
+inline bool batched_kernel_available() {
+  return batched_kernel_lanes() > 0;
+}
+
+/// add_internal_forces() for one-point elements, \p lanes elements at a time in SIMD lanes
 /// (solid_kernel_batched.cpp): the same arithmetic as the scalar kernel, so forces, energies and
 /// steps equal its own to round-off (fused multiply-adds and the order of the sums differ). The
 /// last batch is filled with copies of its last element, whose results are dropped. Only where
-/// batched_kernel_available(); \p coordinates must be those the elements were built from (the
-/// hourglass projections are recomputed from them).
+/// batched_kernel_supports(\p lanes) (std::invalid_argument otherwise); \p coordinates must be
+/// those the elements were built from (the hourglass projections are recomputed from them).
 SolidForceTotals add_internal_forces_batched(const SolidElements& elements,
                                              const SolidKernelSettings& settings,
                                              const double* coordinates, const double* u,
-                                             const double* v, double* forces);
+                                             const double* v, double* forces, int lanes);
+
+/// Which pass add_internal_forces() runs with \p settings on this CPU, for the run summary:
+/// "batched, 8 lanes (AVX-512)", "batched, 4 lanes (AVX2)", "scalar" or "scalar (full
+/// integration)".
+std::string solid_kernel_name(const SolidKernelSettings& settings);
 
 /// The smallest stable step over every rank's elements and where it is, as "element 12 of block
 /// 'rail' at (x, y, z) m" (collective). \p step gives each element's step (e.g. the reference

@@ -219,7 +219,7 @@ void StaticsStep::run(StepContext& context) {
     const std::vector<double> zero(x.size(), 0.0);
     contact->initialise(unit_mass, 0, x.data(), zero.data());
     const int max_iterations = parameters_->get<int>("Contact iterations");
-    Progress progress = context.progress("contact iterations", max_iterations);
+    Progress progress = context.iteration_progress("contact iterations", max_iterations);
     newton = solve_with_contact(
         K, original_forces, constraints, *solver, elasticity_traits(dofs), *contact, dofs,
         max_iterations, parameters_->get<double>("Contact tolerance"), context.path, *u, progress);

@@ -6,7 +6,11 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <Eigen/Dense>
@@ -18,6 +22,7 @@
 #include "physics/explicit/checkpoint.hpp"
 #include "physics/explicit/convected_start.hpp"
 #include "physics/explicit/explicit_output.hpp"
+#include "physics/explicit/explicit_solver.hpp"
 #include "physics/explicit/lanczos.hpp"
 #include "physics/explicit/solid_kernel.hpp"
 #include "physics/materials/elastic_material.hpp"
@@ -212,15 +217,21 @@ TEST(ExplicitKernel, RotatedStateHasRotatedForcesAndEqualEnergies) {
   }
 }
 
-// The batched kernel (kLanes elements per SIMD batch) is the scalar kernel's arithmetic on lanes:
+// The batched kernel (8 or 4 elements per SIMD batch) is the scalar kernel's arithmetic on lanes:
 // forces, energies, powers and the stable step must equal the scalar kernel's to round-off, for
-// each hourglass form. 3 x 3 x 2 elements make two full batches and a last one of two (padded
-// with copies whose results must not count); every node is moved, strains are large (~1 %), the
-// displacement excites the hourglass modes, and the velocities compress some elements and
-// stretch others, so that lanes of one batch take both sides of the bulk viscosity's switch.
+// each hourglass form and each batch width this CPU runs. 3 x 3 x 2 elements make two full
+// batches of 8 and a last one of two (four and a half of 4: padded with copies whose results must
+// not count); every node is moved, strains are large (~1 %), the displacement excites the
+// hourglass modes, and the velocities compress some elements and stretch others, so that lanes
+// of one batch take both sides of the bulk viscosity's switch.
 TEST(ExplicitKernel, BatchedKernelEqualsScalarKernelToRoundOff) {
-  if (!batched_kernel_available())
-    GTEST_SKIP() << "no AVX-512 here: add_internal_forces() runs the scalar kernel";
+  std::vector<int> widths;
+  for (const int lanes : {8, 4})
+    if (batched_kernel_supports(lanes))
+      widths.push_back(lanes);
+  if (widths.empty())
+    GTEST_SKIP() << "neither AVX-512 nor AVX2 here: add_internal_forces() runs the scalar kernel";
+  EXPECT_EQ(batched_kernel_lanes(), widths.front());
   Patch patch(true, {3, 3, 2}, 0.012);
   const std::size_t n = patch.n_values();
   std::vector<double> u(n), v(n);
@@ -247,27 +258,73 @@ TEST(ExplicitKernel, BatchedKernelEqualsScalarKernelToRoundOff) {
     ASSERT_GT(compressed, 0);
     ASSERT_LT(compressed, elements.n_elements);
 
-    std::vector<double> f_scalar(n, 0.0), f_batched(n, 0.0);
+    std::vector<double> f_scalar(n, 0.0);
     settings.batched = false;
     const SolidForceTotals scalar = add_internal_forces(elements, settings, patch.x.data(),
                                                         u.data(), v.data(), f_scalar.data());
-    settings.batched = true;
-    const SolidForceTotals batched = add_internal_forces(elements, settings, patch.x.data(),
-                                                         u.data(), v.data(), f_batched.data());
     double largest = 0;
     for (double value : f_scalar)
       largest = std::max(largest, std::abs(value));
-    for (std::size_t k = 0; k < n; ++k)
-      EXPECT_NEAR(f_batched[k], f_scalar[k], 1e-14 * largest) << "value " << k;
-    EXPECT_NEAR(batched.strain_energy, scalar.strain_energy, 1e-14 * scalar.strain_energy);
-    EXPECT_NEAR(batched.viscous_power, scalar.viscous_power, 1e-14 * scalar.viscous_power);
-    EXPECT_GT(scalar.viscous_power, 0.0);
-    EXPECT_NEAR(batched.hourglass_energy, scalar.hourglass_energy, 1e-14 * scalar.hourglass_energy);
-    EXPECT_NEAR(batched.hourglass_power, scalar.hourglass_power, 1e-14 * scalar.hourglass_power);
     EXPECT_EQ(scalar.hourglass_energy > 0, form == HourglassForm::stiffness);
     EXPECT_EQ(scalar.hourglass_power > 0, form == HourglassForm::viscous);
-    EXPECT_NEAR(batched.stable_step, scalar.stable_step, 1e-15 * scalar.stable_step);
-    EXPECT_EQ(batched.critical_element, scalar.critical_element);
+    EXPECT_GT(scalar.viscous_power, 0.0);
+    for (const int lanes : widths) {
+      SCOPED_TRACE(std::to_string(lanes) + " lanes");
+      std::vector<double> f_batched(n, 0.0);
+      settings.batched = true;
+      const SolidForceTotals batched = add_internal_forces_batched(
+          elements, settings, patch.x.data(), u.data(), v.data(), f_batched.data(), lanes);
+      for (std::size_t k = 0; k < n; ++k)
+        EXPECT_NEAR(f_batched[k], f_scalar[k], 1e-14 * largest) << "value " << k;
+      EXPECT_NEAR(batched.strain_energy, scalar.strain_energy, 1e-14 * scalar.strain_energy);
+      EXPECT_NEAR(batched.viscous_power, scalar.viscous_power, 1e-14 * scalar.viscous_power);
+      EXPECT_NEAR(batched.hourglass_energy, scalar.hourglass_energy,
+                  1e-14 * scalar.hourglass_energy);
+      EXPECT_NEAR(batched.hourglass_power, scalar.hourglass_power, 1e-14 * scalar.hourglass_power);
+      EXPECT_NEAR(batched.stable_step, scalar.stable_step, 1e-15 * scalar.stable_step);
+      EXPECT_EQ(batched.critical_element, scalar.critical_element);
+    }
+    // The default path takes the widest pass.
+    std::vector<double> f_default(n, 0.0), f_widest(n, 0.0);
+    add_internal_forces(elements, settings, patch.x.data(), u.data(), v.data(), f_default.data());
+    add_internal_forces_batched(elements, settings, patch.x.data(), u.data(), v.data(),
+                                f_widest.data(), widths.front());
+    EXPECT_EQ(f_default, f_widest);
+  }
+}
+
+// A batch width the CPU does not run is refused, not run on the wrong instructions.
+TEST(ExplicitKernel, BatchedKernelRefusesAWidthTheCpuLacks) {
+  Patch patch;
+  SolidKernelSettings settings;
+  const SolidElements elements = build_solid_elements(*patch.partition, *patch.materials, settings);
+  std::vector<double> zero(patch.n_values(), 0.0), f(patch.n_values(), 0.0);
+  for (const int lanes : {2, 16})
+    EXPECT_THROW(add_internal_forces_batched(elements, settings, patch.x.data(), zero.data(),
+                                             zero.data(), f.data(), lanes),
+                 std::invalid_argument);
+}
+
+// Contact and solid limits: far apart the smaller holds; equal, 0.83 of it (the contact stability
+// map's blow-ups from 0.85); in between a linear rise, whichever of the two is smaller; no pair
+// (+inf) leaves the solids' step.
+TEST(ExplicitStableStep, CoupledLimitIsLoweredOnlyWhereContactAndSolidsAreClose) {
+  EXPECT_DOUBLE_EQ(coupled_stable_step(1e-7, 1e-7), 0.83e-7);
+  EXPECT_DOUBLE_EQ(coupled_stable_step(1e-7, 1.25e-7), 0.915e-7);
+  EXPECT_DOUBLE_EQ(coupled_stable_step(1.25e-7, 1e-7), 0.915e-7);
+  EXPECT_DOUBLE_EQ(coupled_stable_step(1e-7, 1.5e-7), 1e-7);
+  EXPECT_DOUBLE_EQ(coupled_stable_step(3e-7, 1e-7), 1e-7);
+  EXPECT_DOUBLE_EQ(coupled_stable_step(1e-7, 1e300), 1e-7);
+  EXPECT_DOUBLE_EQ(coupled_stable_step(1e-7, std::numeric_limits<double>::infinity()), 1e-7);
+  // The default Safety factor 0.9 keeps equal limits at 0.75 of the smaller, as docs advise.
+  EXPECT_LE(0.9 * coupled_stable_step(1.0, 1.0), 0.75);
+  // Continuous and rising as the limits move apart.
+  double previous = coupled_stable_step(1.0, 1.0);
+  for (double ratio = 1; ratio <= 1.6; ratio += 0.01) {
+    const double step = coupled_stable_step(1.0, ratio);
+    EXPECT_GE(step, previous);
+    EXPECT_LE(step - previous, 0.0035);
+    previous = step;
   }
 }
 

@@ -22,9 +22,12 @@ With --compare, it instead times the scalar and the batched (SIMD) kernel side b
 rotated every round, best of --repeats rounds, wall and CPU time of the stepping (CPU: the rank's
 processor time, fairer on a shared machine), and the ratios to the scalar kernel. --baseline adds
 another railfe executable (e.g. the main branch's build, whose only kernel is the scalar one),
-wall time only where it does not report CPU time. Writes docs/data/explicit_kernel_simd.csv:
+wall time only where it does not report CPU time. Each run records the pass it took (summary's
+"solid kernel": 8 lanes with AVX-512, 4 with AVX2). Writes --csv (default
+docs/data/explicit_kernel_simd.csv, the AVX-512 machine's; docs/data/explicit_kernel_avx2.csv
+holds an AVX2 machine's):
   /usr/bin/python3 regression/benchmarks/explicit_kernel.py --compare [--sizes 46 100]
-      [--steps 200 30] [--repeats 5] [--baseline ../main/build/bin/railfe]
+      [--steps 200 30] [--repeats 5] [--baseline ../main/build/bin/railfe] [--csv FILE]
 """
 import argparse
 import csv
@@ -90,11 +93,12 @@ def compare_kernels(args):
                     "cpu_us_per_element_step":
                         "" if cpu is None else 1e6 * cpu / element_steps,
                     "energy_error_at_end": step["energy error at end"],
+                    "pass": step.get("solid kernel", ""),
                 })
                 print(f"{n ** 3} elements, {label}: wall {runs[-1]['wall_us_per_element_step']:.4f}"
                       f" us, CPU {runs[-1]['cpu_us_per_element_step']} us", flush=True)
-    os.makedirs("docs/data", exist_ok=True)
-    with open("docs/data/explicit_kernel_simd.csv", "w", newline="") as out:
+    os.makedirs(os.path.dirname(args.csv) or ".", exist_ok=True)
+    with open(args.csv, "w", newline="") as out:
         writer = csv.DictWriter(out, fieldnames=list(runs[0].keys()))
         writer.writeheader()
         writer.writerows(runs)
@@ -128,6 +132,9 @@ def main():
                         help="scalar against batched kernel, interleaved, best of --repeats")
     parser.add_argument("--repeats", type=int, default=5)
     parser.add_argument("--baseline", help="another railfe executable to time beside them")
+    parser.add_argument("--csv", default="docs/data/explicit_kernel_simd.csv",
+                        help="with --compare: where the runs go (one file per instruction set: "
+                        "the batched pass is 8 lanes with AVX-512, 4 with AVX2 only)")
     args = parser.parse_args()
     if args.steps is None:
         args.steps = [200, 30] if args.compare else [400, 60]

@@ -373,16 +373,22 @@ def plot():
     fig.savefig(held(PNG), dpi=100)
 
 
-def main():
-    parser = study_parser(__doc__.split("\n")[0], "squeal_steady_creepage_work", ROOT)
-    parser.add_argument("--sizes", type=float, nargs="+", default=SIZES_MM,
-                        help="contact zone element sizes to run (mm); the CSV keeps the others")
-    parser.add_argument("--end-time", type=float, default=END_TIME, help="the runs' end (s)")
-    parser.add_argument("--window", type=float, nargs=2, default=WINDOW,
+def add_run_arguments(parser, end_time, window):
+    """--end-time, --window and --reuse, with these defaults: the runs' timeline and whether
+    runs already in --work are read instead of run again."""
+    parser.add_argument("--end-time", type=float, default=end_time, help="the runs' end (s)")
+    parser.add_argument("--window", type=float, nargs=2, default=window,
                         help="the window the means are taken over (s)")
     parser.add_argument("--reuse", action="store_true",
                         help="read the runs already in --work (same deck) instead of running "
                              "them again")
+
+
+def main():
+    parser = study_parser(__doc__.split("\n")[0], "squeal_steady_creepage_work", ROOT)
+    parser.add_argument("--sizes", type=float, nargs="+", default=SIZES_MM,
+                        help="contact zone element sizes to run (mm); the CSV keeps the others")
+    add_run_arguments(parser, END_TIME, WINDOW)
     parser.add_argument("--hold", type=float,
                         help="the held runs at this creepage (make_squeal_decks.py "
                              "--hold-creepage), written to the files' _held twins")

@@ -28,7 +28,11 @@ f = 1, 3, 10, 30 and 10 with the softer side took 9, 13, 35, 58 and 11 min on on
 machine that was running two of them at once:
 
     /usr/bin/python3 regression/studies/squeal_steady_penalty.py [build/bin/railfe] \\
-        [--penalties 1 3 10 30] [--size 3] [--reuse] [--replot]
+        [--penalties 1 3 10 30] [--softer 10] [--size 3] [--reuse] [--replot]
+
+Another mesh or window is another run set, with its own files (--name): the 2 mm mesh, softer
+side at f = 10, held to 4 ms with the window 3-4 ms, as
+    ... --penalties --softer 10 --size 2 --end-time 4e-3 --window 3e-3 4e-3 --name 2mm_4ms
 """
 import json
 import math
@@ -50,9 +54,16 @@ WINDOW = (1.5e-3, 2.5e-3)  # s
 YOUNG, POISSON = 210e9, 0.3  # the scene's steel (make_squeal_decks.py)
 BULK = YOUNG / (3 * (1 - 2 * POISSON))
 SUMMARY_KEY = "contact wheel-rail: penalty tangential flexibility / patch's"
-CSV = os.path.join(ROOT, "docs", "data", "squeal_steady_penalty.csv")
-HISTORIES = os.path.join(ROOT, "docs", "data", "squeal_steady_penalty_histories.csv")
-PNG = os.path.join(ROOT, "docs", "img", "squeal_steady_penalty.png")
+
+def outputs(name):
+    """The study's CSV, histories CSV and PNG for run set `name` ("" for the 3 mm set)."""
+    suffix = f"_{name}" if name else ""
+    return (os.path.join(ROOT, "docs", "data", f"squeal_steady_penalty{suffix}.csv"),
+            os.path.join(ROOT, "docs", "data", f"squeal_steady_penalty{suffix}_histories.csv"),
+            os.path.join(ROOT, "docs", "img", f"squeal_steady_penalty{suffix}.png"))
+
+
+CSV, HISTORIES, PNG = outputs("")
 
 
 def penalty_flexibility(results, size_mm, penalty):
@@ -121,6 +132,7 @@ def plot():
     import matplotlib.pyplot as plt
     rows = typed_rows(CSV, [])
     histories = typed_rows(HISTORIES, [])
+    size = rows[0]["zone_element_size_mm"]
     fig, axes = plt.subplots(1, 3, figsize=(18, 5.6))
     time = [1e3 * r["time_s"] for r in histories]
     for row in rows:
@@ -185,33 +197,37 @@ def plot():
         axes[2].annotate(f"f = {r['penalty_factor']:g}, {r['roll_wall_s'] / 60:.0f} min",
                          (w, 100 * abs(r["longitudinal_force_vs_exact_spin"])),
                          textcoords="offset points", xytext=(4, 4), fontsize=7)
-    axes[2].set_xlabel("steps to 2.5 ms (thousands; 35,864 elements; labels: wall time on a "
-                       "shared core)")
+    first = (rows + softer)[0]
+    axes[2].set_xlabel(f"steps to {1e3 * first['end_time_s']:g} ms (thousands; "
+                       f"{first['elements']:,.0f} elements; labels: wall time on a shared core)")
     axes[2].set_ylabel("|creep force error| (%)")
     axes[2].set_title("speed against accuracy")
     axes[2].set_ylim(bottom=0)
     axes[2].legend(fontsize=8)
     for axis in axes:
         axis.grid(alpha=0.3, which="both")
-    fig.suptitle("Squeal scene, case 1 held at ξ = 0.8e-3, 3 mm contact mesh: the penalty "
-                 "layer's tangential flexibility is the missing creep force")
+    fig.suptitle(f"Squeal scene, case 1 held at ξ = 0.8e-3, {size:g} mm contact mesh: the "
+                 "penalty layer's tangential flexibility is the missing creep force")
     fig.tight_layout()
     fig.savefig(PNG, dpi=100)
 
 
 def main():
     parser = study_parser(__doc__.split("\n")[0], "squeal_steady_penalty_work", ROOT)
-    parser.add_argument("--penalties", type=float, nargs="+", default=PENALTIES)
+    parser.add_argument("--penalties", type=float, nargs="*", default=PENALTIES)
     parser.add_argument("--softer", type=float, nargs="*", default=SOFTER,
                         help="factors run with Penalty stiffness 'bulk modulus, softer side'")
     parser.add_argument("--size", type=float, default=3, help="contact zone element size (mm)")
-    parser.add_argument("--reuse", action="store_true",
-                        help="read the runs already in --work (same deck) instead of running "
-                             "them again")
+    steady.add_run_arguments(parser, END_TIME, WINDOW)
+    parser.add_argument("--name", default="",
+                        help="a run set other than the 3 mm one: its files get _NAME (e.g. "
+                             "2mm_4ms: squeal_steady_penalty_2mm_4ms.csv)")
     args = parser.parse_args()
+    global CSV, HISTORIES, PNG
+    CSV, HISTORIES, PNG = outputs(args.name)
     if not args.replot:
         steady.HOLD = HOLD
-        timeline = steady.Timeline(END_TIME, WINDOW)
+        timeline = steady.Timeline(args.end_time, args.window)
         rows, columns = [], {}
         runs = [(f, False) for f in args.penalties] + [(f, True) for f in args.softer]
         for penalty, softer in runs:
