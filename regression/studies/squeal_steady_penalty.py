@@ -175,6 +175,9 @@ def plot():
                          (f, 100 * r["predicted_vs_exact_spin"]), textcoords="offset points",
                          xytext=(4, 6), fontsize=7)
     axes[1].axhspan(-4, 4, color="green", alpha=0.1, label="±4 %: issue 15's band")
+    lowest = min(100 * r[key] for r in rows + softer
+                 for key in ("longitudinal_force_vs_exact_spin", "longitudinal_force_vs_exact"))
+    axes[1].set_ylim(bottom=min(-4.0, lowest) - 1.5)
     axes[1].set_xscale("log")
     axes[1].set_xlabel("penalty factor f")
     axes[1].set_ylabel("creep force error (%)")
