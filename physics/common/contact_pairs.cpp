@@ -193,10 +193,12 @@ bool ContactPairs::scale_masses(std::vector<double>& owned_mass) {
     const double target = specs_[p].mass_scaling_step;
     const PenaltyContactPair& pair = pairs_[p];
     const PenaltyPairGeometry& geometry = pair.geometry();
+    if (!(target > 0))
+      continue;
+    result[p].step_before = pair.stable_step();  // reported even where nothing is needed
     if (!(target > pair.stable_step()) || geometry.face_stiffness.empty())
       continue;
     scaled = true;
-    result[p].step_before = pair.stable_step();
     const double zeta = specs_[p].damping_fraction;
     const double half = 0.5 * target / (std::sqrt(1 + zeta * zeta) - zeta);
     const double q = half * half;

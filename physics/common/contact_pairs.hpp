@@ -24,9 +24,10 @@ class MeshPartition;
 
 /// What selective mass scaling gave one contact pair (ContactPairs::scale_masses()).
 struct ContactMassScaling {
-  double step_before = 0;  ///< the pair's critical step before (s); 0 where it was not scaled
-  double added_mass = 0;   ///< mass added to its nodes, over all ranks (kg)
-  long long nodes = 0;     ///< nodes made heavier, over all ranks
+  /// the pair's critical step before (s); 0 where the pair has no Mass scaling step
+  double step_before = 0;
+  double added_mass = 0;  ///< mass added to its nodes, over all ranks (kg)
+  long long nodes = 0;    ///< nodes made heavier, over all ranks
 };
 
 /// All contact pairs of one step.
