@@ -148,9 +148,7 @@ PenaltyContactPair::PenaltyContactPair(PenaltyPairGeometry geometry, PenaltyPair
   search_ = std::make_unique<BucketSearch>(geometry_.master_faces);
   slaves_.resize(geometry_.slave_nodes.size());
   stable_step_ = smallest_spring_step(geometry_);
-  // Central difference with a viscous damper of fraction ζ: ω Δt ≤ 2 (√(1 + ζ²) − ζ).
-  const double zeta = settings_.damping_fraction;
-  stable_step_ *= std::sqrt(1 + zeta * zeta) - zeta;
+  stable_step_ *= damped_step_factor(settings_.damping_fraction);
 }
 
 PenaltyContactPair::~PenaltyContactPair() = default;

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -32,6 +33,12 @@ struct PenaltyPairGeometry {
   std::vector<double> mass;  ///< lumped mass of every surface node (kg)
   int n_surface_nodes = 0;   ///< size of the surface
 };
+
+/// The factor √(1 + ζ²) − ζ by which a viscous damper of fraction \p zeta lowers a spring's
+/// central-difference limit 2/ω (ω Δt ≤ 2 (√(1 + ζ²) − ζ)).
+inline double damped_step_factor(double zeta) {
+  return std::sqrt(1 + zeta * zeta) - zeta;
+}
 
 /// The choices of a pair besides its geometry.
 struct PenaltyPairSettings {

@@ -199,8 +199,7 @@ bool ContactPairs::scale_masses(std::vector<double>& owned_mass) {
     if (!(target > pair.stable_step()) || geometry.face_stiffness.empty())
       continue;
     scaled = true;
-    const double zeta = specs_[p].damping_fraction;
-    const double half = 0.5 * target / (std::sqrt(1 + zeta * zeta) - zeta);
+    const double half = 0.5 * target / damped_step_factor(specs_[p].damping_fraction);
     const double q = half * half;
     const double stiffest_face =
         *std::max_element(geometry.face_stiffness.begin(), geometry.face_stiffness.end());

@@ -22,30 +22,38 @@ namespace railfe {
 
 namespace {
 
-// Mass scaling that adds more than 1 % of the model's mass changes its dynamics, not only its step.
-std::string mass_scaling_warning(const ExplicitSolver& solver) {
+// "<who> added 3.2 kg to 800 elements, 75 % of the model's mass: it changes the dynamics (lower
+// <whose> Mass scaling step)": mass scaling that adds more than 1 % of the model's mass changes
+// its dynamics, not only its step.
+std::string added_mass_warning(const std::string& who, double added, long long count,
+                               const std::string& what, double total_mass,
+                               const std::string& whose) {
   std::ostringstream text;
   text.precision(3);
-  text << "Mass scaling step added " << solver.mass_scaling().added_mass << " kg to "
-       << solver.mass_scaling().scaled_elements << " elements, "
-       << 100 * solver.mass_scaling().added_mass / solver.total_mass()
-       << " % of the model's mass: it changes the dynamics (lower the Mass scaling step)";
+  text << who << " added " << added << " kg to " << count << " " << what << ", "
+       << 100 * added / total_mass << " % of the model's mass: it changes the dynamics (lower "
+       << whose << " Mass scaling step)";
   return text.str();
+}
+
+std::string mass_scaling_warning(const ExplicitSolver& solver) {
+  return added_mass_warning("Mass scaling step", solver.mass_scaling().added_mass,
+                            solver.mass_scaling().scaled_elements, "elements", solver.total_mass(),
+                            "the");
 }
 
 // A warning for each contact pair whose Mass scaling step added over 1 % of the model's mass,
 // "" where none did.
 std::string contact_mass_scaling_warning(const ExplicitSolver& solver) {
-  std::ostringstream text;
-  text.precision(3);
+  std::string text;
   const auto& scaling = solver.contact().mass_scaling();
   for (std::size_t p = 0; p < scaling.size(); ++p)
     if (scaling[p].added_mass > 0.01 * solver.total_mass())
-      text << (text.tellp() > 0 ? "; " : "") << "contact pair '" << solver.contact().specs()[p].name
-           << "': Mass scaling step added " << scaling[p].added_mass << " kg to "
-           << scaling[p].nodes << " nodes, " << 100 * scaling[p].added_mass / solver.total_mass()
-           << " % of the model's mass: it changes the dynamics (lower its Mass scaling step)";
-  return text.str();
+      text += (text.empty() ? "" : "; ") +
+              added_mass_warning(
+                  "contact pair '" + solver.contact().specs()[p].name + "': Mass scaling step",
+                  scaling[p].added_mass, scaling[p].nodes, "nodes", solver.total_mass(), "its");
+  return text;
 }
 
 std::string seconds_text(double value) {

@@ -173,9 +173,9 @@ std::string solid_kernel_name(const SolidKernelSettings& settings) {
 SolidForceTotals add_internal_forces(const SolidElements& elements,
                                      const SolidKernelSettings& settings, const double* coordinates,
                                      const double* u, const double* v, double* forces) {
-  if (settings.batched && elements.n_points == 1 && batched_kernel_available())
-    return add_internal_forces_batched(elements, settings, coordinates, u, v, forces,
-                                       batched_kernel_lanes());
+  const int lanes = batched_kernel_lanes();
+  if (settings.batched && elements.n_points == 1 && lanes > 0)
+    return add_internal_forces_batched(elements, settings, coordinates, u, v, forces, lanes);
   SolidForceTotals totals;
   double strain = 0, hourglass_energy = 0, hourglass_power = 0, viscous_power = 0;
   const int n_points = elements.n_points;
