@@ -42,6 +42,9 @@ struct HertzPatch {
   std::unique_ptr<HalfSpaceKernels> kernels;  ///< grid and influence coefficients
   NormalSolution normal;                      ///< pressures under the Hertz load
   std::vector<double> leading_edge;           ///< the ellipse's leading edge per row (m)
+  /// Per row, TangentialSettings::row_longitudinal_slip (a separation's rolling radii; empty:
+  /// the spin's −φ y).
+  std::vector<double> row_longitudinal_slip;
 };
 
 /// The normal problem of the separation A x² + B y² of \p hertz under its load, on an \p m × \p m
@@ -53,5 +56,36 @@ HertzPatch solve_hertz_patch(const HertzContact& hertz, double G, double nu, int
 /// The same on an \p mx × \p my grid (\p mx along the rolling direction), each side reaching 10 %
 /// (and at least 1.5 elements) beyond the ellipse: the grids of Kalker's CONTACT program.
 HertzPatch solve_hertz_patch(const HertzContact& hertz, double G, double nu, int mx, int my);
+
+/// The undeformed separation across the rolling direction of a non-Hertzian (profile) contact:
+/// points (y, s) with y strictly increasing, read piecewise linearly; only differences of s count
+/// (its least value is the first touch).
+struct LateralSeparation {
+  std::vector<double> y;  ///< across the rolling direction (m)
+  std::vector<double> s;  ///< separation (m)
+  /// Optional, one per point: the wheel's rolling radius R at y (m). The longitudinal rigid slip
+  /// across the patch is then ξ − (R(y) − R(0)) / R(0), ξ that of y = 0, instead of ξ − φ y.
+  std::vector<double> rolling_radius;
+  /// s at \p at less the least s (linear between points; outside the points, +infinity: the
+  /// profiles end there, so the contact must not reach it).
+  double at(double at) const;
+};
+
+/// How a non-Hertzian patch's grid was found.
+struct SeparationPatchInfo {
+  int refits = 0;  ///< grids solved before the final one
+};
+
+/// The normal problem of the separation A x² + \p lateral(y) (Kalker's CONTACT calls it the
+/// undeformed distance; A the rolling direction's relative curvature) under \p load, on an
+/// \p mx × \p my grid fitted to the contact: the contact lies where the separation is below the
+/// approach δ, so the grid covers that region (with 5 % beyond) and is refitted until δ no longer
+/// grows past it. Per row the leading edge is placed where the square of the pressure,
+/// extrapolated from the row's two leading elements, falls to zero (within the first element
+/// beyond them). With rolling radii, sets the patch's row_longitudinal_slip from them. Throws
+/// std::invalid_argument where the contact reaches the separation's ends, or rolling radii do not
+/// reach y = 0.
+HertzPatch solve_separation_patch(const LateralSeparation& lateral, double A, double load, double G,
+                                  double nu, int mx, int my, SeparationPatchInfo* info = nullptr);
 
 }  // namespace railfe

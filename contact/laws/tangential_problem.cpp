@@ -72,6 +72,9 @@ TangentialSolution solve_tangential(const HalfSpaceKernels& kernels,
   if (!settings.leading_edge.empty() &&
       settings.leading_edge.size() != static_cast<std::size_t>(g.my))
     throw std::invalid_argument("the tangential solve needs one leading edge per row of the grid");
+  if (!settings.row_longitudinal_slip.empty() &&
+      settings.row_longitudinal_slip.size() != static_cast<std::size_t>(g.my))
+    throw std::invalid_argument("the tangential solve needs one rigid slip per row of the grid");
   // ∂u/∂x at the centre ≈ (c1 (u_e+1 - u_e) + c2 (u_e+2 - u_e)) / dx per element in contact:
   // BDF2 (2, -1/2), first order (1, 0), and for the element that leads its row the fit of
   // u = u_e + v (x - x_e) + c (x - x_L)^{3/2}, x > x_L, to its two neighbours ahead: u is smooth
@@ -113,6 +116,12 @@ TangentialSolution solve_tangential(const HalfSpaceKernels& kernels,
   // that target with the others held (a projected Gauss–Seidel step on the symmetric influence
   // matrix, so |q| <= μp and slip opposes traction), reading the target from the displacement
   // its neighbour ahead has just received.
+  // The longitudinal rigid slip of row j.
+  const auto longitudinal_slip = [&](int j) {
+    return creep.longitudinal + (settings.row_longitudinal_slip.empty()
+                                     ? -creep.spin * g.y(j)
+                                     : settings.row_longitudinal_slip[static_cast<std::size_t>(j)]);
+  };
   std::vector<double> ux(is_relevant.size(), 0.0), uy(is_relevant.size(), 0.0);
   // Adds the displacements of a traction change on element (i, j) to the relevant points.
   const auto spread_change = [&](int i, int j, double dqx, double dqy) {
@@ -129,7 +138,7 @@ TangentialSolution solve_tangential(const HalfSpaceKernels& kernels,
   };
   if (settings.start_in_full_slip)
     for (int e : contact) {
-      const double wx = creep.longitudinal - creep.spin * g.y(e / mx);
+      const double wx = longitudinal_slip(e / mx);
       const double wy = creep.lateral + creep.spin * g.x(e % mx);
       const double w = std::hypot(wx, wy);
       if (w > 0) {
@@ -150,14 +159,14 @@ TangentialSolution solve_tangential(const HalfSpaceKernels& kernels,
     double largest_squared = 0;
     for (int e : order) {
       const int i = e % mx, j = e / mx, d = at(e);
-      const double x = g.x(i), y = g.y(j);
+      const double x = g.x(i);
       // The slip at the centre is (u_e - b) / h: b is the displacement the material brings from
       // ahead less the rigid slip over the step h. With the stencil (c1, c2), h = dx / (c1 + c2)
       // and b = (c1 u_e+1 + c2 u_e+2) / (c1 + c2) - w h (BDF2: b = (4 u_e+1 - u_e+2) / 3 - w h,
       // h = 2 dx / 3).
       const Local& l = locals[e];
       const double c1 = l.c1, c2 = l.c2, h = g.dx / (c1 + c2);
-      const double wx = creep.longitudinal - creep.spin * y, wy = creep.lateral + creep.spin * x;
+      const double wx = longitudinal_slip(j), wy = creep.lateral + creep.spin * x;
       const double bx = (c1 * ux[d + 1] + c2 * ux[d + 2]) / (c1 + c2) - wx * h;
       const double by = (c1 * uy[d + 1] + c2 * uy[d + 2]) / (c1 + c2) - wy * h;
       // Coulomb friction needs no slip speed (the square roots here cost a tenth of a sweep).

@@ -52,6 +52,10 @@ struct TangentialSettings {
   /// takes that form from the edge, placed here or, where unknown, at the element's leading side
   /// (HertzPatch::leading_edge gives the ellipse's).
   std::vector<double> leading_edge;
+  /// Per row of the grid, the part of the longitudinal rigid slip that varies across the patch,
+  /// in place of the spin's −φ y: on a conformal contact the wheel's rolling radius R(y) changes
+  /// nonlinearly across it, and the rigid slip is ξ − (R(y) − R(0)) / R(0). Empty: −φ y.
+  std::vector<double> row_longitudinal_slip;
   int max_sweeps = 1000;  ///< Gauss–Seidel sweeps before giving up
   /// On the largest traction change in a sweep, relative to μs max p. The forces then lie
   /// within about 1e-9 μN of the settled ones (Coulomb, Hertz patch at 40 × 40).

@@ -262,5 +262,97 @@ TEST(ExactSolver, RefusesAGridThatDoesNotEncloseTheContact) {
                std::invalid_argument);
 }
 
+// Hertz's separation B y² sampled every 0.1 mm over +-15 mm.
+LateralSeparation sampled_crown(const HertzContact& hertz, double centre = 0) {
+  LateralSeparation lateral;
+  for (int k = -150; k <= 150; ++k) {
+    const double y = centre + k * 1e-4;
+    lateral.y.push_back(y);
+    lateral.s.push_back(hertz.B * (y - centre) * (y - centre) + 3e-3);
+  }
+  return lateral;
+}
+
+TEST(ExactSolver, SeparationPatchOfHertzsSeparationIsHertzsPatch) {
+  const Patch reference(40);
+  const HertzContact& h = reference.hertz;
+  SeparationPatchInfo info;
+  // Off-centre and lifted: only differences of s count, and the grid follows the contact.
+  const HertzPatch patch =
+      solve_separation_patch(sampled_crown(h, 4e-3), h.A, kLoad, kG, kNu, 40, 40, &info);
+  ASSERT_TRUE(patch.normal.converged);
+  EXPECT_NEAR(patch.normal.max_pressure, h.pressure, 0.002 * h.pressure);
+  EXPECT_NEAR(patch.normal.approach, h.approach, 0.001 * h.approach);
+  EXPECT_NEAR(patch.normal.area, M_PI * h.a * h.b, 0.01 * M_PI * h.a * h.b);
+  // Every row's leading edge within a tenth of an element of the ellipse's.
+  const ContactGrid& g = patch.kernels->grid();
+  int rows = 0;
+  for (int j = 0; j < g.my; ++j) {
+    const double y = g.y(j) - 4e-3;
+    if (std::isnan(patch.leading_edge[j]) || std::abs(y) > 0.9 * h.b)
+      continue;
+    EXPECT_NEAR(patch.leading_edge[j], h.a * std::sqrt(1 - (y / h.b) * (y / h.b)), 0.1 * g.dx)
+        << "row " << j;
+    ++rows;
+  }
+  EXPECT_GT(rows, 30);
+  // The creep force at small creepage then meets the ellipse's solve to 0.2 %.
+  TangentialSettings settings;
+  settings.leading_edge = patch.leading_edge;
+  const double on_separation =
+      solve_tangential(*patch.kernels, patch.normal.pressure, {-1e-3, 0, 0}, {}, settings)
+          .forces.Fx;
+  const double on_ellipse = solve_tangential(reference.kernels, reference.normal.pressure,
+                                             {-1e-3, 0, 0}, {}, reference.settings)
+                                .forces.Fx;
+  EXPECT_NEAR(on_separation, on_ellipse, 0.002 * std::abs(on_ellipse));
+}
+
+TEST(ExactSolver, RollingRadiiGrowingLinearlyAreTheSpinsLongitudinalSlip) {
+  const Patch reference(30);
+  const HertzContact& h = reference.hertz;
+  const double phi = 2.0, radius = 0.46;  // 1/m, m
+  LateralSeparation plain = sampled_crown(h), radii = plain;
+  for (double y : radii.y)
+    radii.rolling_radius.push_back(radius * (1 + phi * y));
+  const HertzPatch spin_patch = solve_separation_patch(plain, h.A, kLoad, kG, kNu, 30, 30);
+  const HertzPatch radii_patch = solve_separation_patch(radii, h.A, kLoad, kG, kNu, 30, 30);
+  ASSERT_EQ(radii_patch.row_longitudinal_slip.size(), 30u);
+  EXPECT_TRUE(spin_patch.row_longitudinal_slip.empty());
+  for (int j = 0; j < 30; ++j)
+    EXPECT_NEAR(radii_patch.row_longitudinal_slip[j], -phi * radii_patch.kernels->grid().y(j),
+                1e-12);
+  TangentialSettings spin_settings, radii_settings;
+  spin_settings.leading_edge = spin_patch.leading_edge;
+  radii_settings.leading_edge = radii_patch.leading_edge;
+  radii_settings.row_longitudinal_slip = radii_patch.row_longitudinal_slip;
+  const Creepages creep{-5e-4, 0, phi};
+  const CreepForces with_spin =
+      solve_tangential(*spin_patch.kernels, spin_patch.normal.pressure, creep, {}, spin_settings)
+          .forces;
+  const CreepForces with_radii =
+      solve_tangential(*radii_patch.kernels, radii_patch.normal.pressure, creep, {}, radii_settings)
+          .forces;
+  EXPECT_GT(std::abs(with_spin.Fy), 100);  // the spin acts
+  EXPECT_NEAR(with_radii.Fx, with_spin.Fx, 1e-9 * kLoad);
+  EXPECT_NEAR(with_radii.Fy, with_spin.Fy, 1e-9 * kLoad);
+  // A rigid-slip row per grid row, or the solve refuses.
+  radii_settings.row_longitudinal_slip.pop_back();
+  EXPECT_THROW(solve_tangential(*radii_patch.kernels, radii_patch.normal.pressure, creep, {},
+                                radii_settings),
+               std::invalid_argument);
+}
+
+TEST(ExactSolver, SeparationPatchRefusesProfilesThatEndInsideTheContact) {
+  const Patch reference(20);
+  LateralSeparation narrow = sampled_crown(reference.hertz);
+  narrow.y.resize(160);  // ends 1 mm past the crown, inside the 5.4 mm half-width
+  narrow.s.resize(160);
+  EXPECT_THROW(solve_separation_patch(narrow, reference.hertz.A, kLoad, kG, kNu, 20, 20, nullptr),
+               std::invalid_argument);
+  EXPECT_TRUE(std::isinf(narrow.at(0.5)));
+  EXPECT_DOUBLE_EQ(narrow.at(0), 0);
+}
+
 }  // namespace
 }  // namespace railfe

@@ -18,6 +18,7 @@ void find_creepages(StepContext& context, const HertzPatch& patch, const Frictio
   const double bound = friction.static_coefficient * load;
   TangentialSettings settings;
   settings.leading_edge = patch.leading_edge;
+  settings.row_longitudinal_slip = patch.row_longitudinal_slip;
   const std::string file = context.step_name + "_inverse.csv";
   CsvWriter table(context.output.staging_path(file),
                   {"case", "FN_N", "Fx_N", "Fy_N", "phi_per_m", "xi", "eta", "Fx_found_N",

@@ -11,11 +11,25 @@ ParameterSpec contact_patch_parameters() {
       "One contact patch under several theories: forces, moment, pressure, patch and tractions.");
   spec.choice("Geometry", "curvatures",
               {{"curvatures", "Hertz from the relative curvatures A and B"},
-               {"semi-axes", "Hertz from the semi-axes a and b (the curvatures follow)"}},
+               {"semi-axes", "Hertz from the semi-axes a and b (the curvatures follow)"},
+               {"separation",
+                "a non-Hertzian patch, the exact solver alone: the undeformed separation A x² + "
+                "s(y), s from Separation file (as Kalker's CONTACT takes the profiles' distance), "
+                "for profiles whose curvature changes across the patch; a_m and b_m in the "
+                "forces file are then the semi-axes of the ellipse with the pressure's second "
+                "moments (sqrt(5 <x²>), sqrt(5 <y²>) about its centre)"}},
               "How the patch is given.");
   spec.real("A", 1 / (2 * 0.46), "Relative curvature along the rolling direction.", "1/m",
             Range::positive());
   spec.real("B", 1 / (2 * 0.30), "Relative curvature across.", "1/m", Range::positive());
+  spec.text("Separation file", "",
+            "CSV relative to the deck's directory: a header line, then rows y (m), s (m) with y "
+            "increasing across the rolling direction: the bodies' undeformed separation, normal "
+            "to the contact plane (only its differences count). The contact must stay inside "
+            "its range of y. A third column R (m), the wheel's rolling radius at y, makes the "
+            "longitudinal rigid slip xi - (R(y) - R(0)) / R(0) across the patch (a conformal "
+            "contact's radii, which vary nonlinearly), xi then that of y = 0, and the spin "
+            "creepage acts across only (phi x); without it the rigid slip is xi - phi y.");
   spec.real("a", 7e-3, "Semi-axis along the rolling direction (Geometry semi-axes).", "m",
             Range::positive());
   spec.real("b", 5e-3, "Semi-axis across (Geometry semi-axes).", "m", Range::positive());
@@ -76,7 +90,8 @@ ParameterSpec contact_patch_parameters() {
               "FASTSIM's traction bound.");
   spec.integer("Exact grid", 40,
                "Elements per side of the exact solver's grid, which reaches 10 % (and at least "
-               "1.5 elements) beyond the Hertz ellipse.",
+               "1.5 elements) beyond the Hertz ellipse (Geometry separation: 5 % beyond where "
+               "the separation is below the approach).",
                Range::at_least(8));
   spec.flag("Traction fields", true,
             "Write <step>_tractions.csv: per FASTSIM and exact case, every element's position, "
@@ -87,7 +102,9 @@ ParameterSpec contact_patch_parameters() {
   spec.only_when("Prescribe", {"creepages"}, {"Longitudinal creepage", "Lateral creepage"});
   spec.only_when("Prescribe", {"forces"},
                  {"Longitudinal force", "Lateral force", "Inverse tolerance"});
-  spec.only_when("Geometry", {"curvatures"}, {"A", "B"});
+  spec.only_when("Geometry", {"curvatures", "separation"}, {"A"});
+  spec.only_when("Geometry", {"curvatures"}, {"B"});
+  spec.only_when("Geometry", {"separation"}, {"Separation file"});
   spec.only_when("Geometry", {"semi-axes"}, {"a", "b"});
   spec.only_when("Theories", {"exact"}, {"Exact grid", "Dynamic friction", "Friction decay"});
   spec.only_when("Theories", {"exact", "polach"}, {"Rolling speed"});

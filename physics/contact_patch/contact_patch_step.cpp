@@ -16,6 +16,7 @@
 #include "framework/output/csv_writer.hpp"
 #include "physics/common/chart_script.hpp"
 #include "physics/contact_patch/contact_patch_inverse.hpp"
+#include "physics/contact_patch/lateral_separation_file.hpp"
 
 namespace railfe {
 
@@ -47,6 +48,26 @@ HertzContact deck_hertz(const Teuchos::ParameterList& p) {
   return p.get<std::string>("Geometry") == "curvatures"
              ? hertz_contact(p.get<double>("A"), p.get<double>("B"), modulus, load)
              : hertz_from_semi_axes(p.get<double>("a"), p.get<double>("b"), modulus, load);
+}
+
+// The semi-axes of the ellipse whose Hertz pressure has the second moments of \p patch's
+// pressure about its centre: sqrt(5 <x²>), sqrt(5 <y²>) (a non-Hertzian patch's size, measured
+// as the explicit runs measure theirs).
+std::pair<double, double> moment_semi_axes(const HertzPatch& patch) {
+  const ContactGrid& g = patch.kernels->grid();
+  double sum = 0, sx = 0, sy = 0, sxx = 0, syy = 0;
+  for (int e = 0; e < g.size(); ++e) {
+    const double p = patch.normal.pressure[static_cast<std::size_t>(e)];
+    const double x = g.x(e % g.mx), y = g.y(e / g.mx);
+    sum += p;
+    sx += p * x;
+    sy += p * y;
+    sxx += p * x * x;
+    syy += p * y * y;
+  }
+  const double mx = sx / sum, my = sy / sum;
+  return {std::sqrt(5 * std::max(sxx / sum - mx * mx, 0.0)),
+          std::sqrt(5 * std::max(syy / sum - my * my, 0.0))};
 }
 
 // A value a theory does not define (Polach's spin moment, the linear theory's adhesion share, the
@@ -128,6 +149,23 @@ void ContactPatchStep::check(const CheckContext& context) {
       parameters_->get<double>("Polach adhesion reduction"))
     throw_input_error(source, context.path + "/Polach slip reduction",
                       "exceeds Polach adhesion reduction", "0 < k_S <= k_A <= 1");
+  if (parameters_->get<std::string>("Geometry") == "separation") {
+    for (const std::string& name : theories_)
+      if (name != "exact")
+        throw_input_error(source, context.path + "/Theories",
+                          "names '" + name +
+                              "', which needs a Hertz ellipse that Geometry 'separation' does "
+                              "not have",
+                          "{exact} alone, or Geometry curvatures or semi-axes");
+    const std::string file = parameters_->get<std::string>("Separation file");
+    if (file.empty())
+      throw_input_error(source, context.path + "/Separation file",
+                        "is empty, which Geometry 'separation' needs",
+                        "a CSV file relative to the deck's directory");
+    lateral_ = read_lateral_separation(context.model.deck().resolve(file), source,
+                                       context.path + "/Separation file");
+    return;
+  }
   const bool semi_axes = parameters_->get<std::string>("Geometry") == "semi-axes";
   const HertzContact h = deck_hertz(*parameters_);
   const double ratio = h.a / h.b;
@@ -163,8 +201,11 @@ void ContactPatchStep::run(StepContext& context) {
   const double E = p.get<double>("Young's modulus"), nu = p.get<double>("Poisson's ratio");
   const double G = E / (2 * (1 + nu));
   const double load = p.get<double>("Normal load");
-  const HertzContact h = deck_hertz(p);
-  const KalkerCoefficients c = KalkerTable::shipped().at(h.a, h.b, nu);
+  const bool separation = p.get<std::string>("Geometry") == "separation";
+  HertzContact h = separation ? HertzContact{} : deck_hertz(p);
+  // (Geometry separation runs the exact solver alone, which needs no coefficients.)
+  const KalkerCoefficients c =
+      separation ? KalkerCoefficients{} : KalkerTable::shipped().at(h.a, h.b, nu);
   FrictionLaw friction;
   friction.static_coefficient = p.get<double>("Static friction");
   const double mu_d = p.get<double>("Dynamic friction");
@@ -187,9 +228,25 @@ void ContactPatchStep::run(StepContext& context) {
   const bool exact = std::find(theories_.begin(), theories_.end(), "exact") != theories_.end();
   HertzPatch patch;
   double normal_seconds = 0;
+  SeparationPatchInfo refits;
   if (exact) {
     const auto start = std::chrono::steady_clock::now();
-    patch = solve_hertz_patch(h, G, nu, p.get<int>("Exact grid"));
+    const int m = p.get<int>("Exact grid");
+    if (separation) {
+      try {
+        patch = solve_separation_patch(lateral_, p.get<double>("A"), load, G, nu, m, m, &refits);
+      } catch (const std::invalid_argument& e) {
+        throw RunError(context.path + "/Separation file: " + e.what());
+      }
+      const auto [a, b] = moment_semi_axes(patch);
+      h.a = a;
+      h.b = b;
+      h.load = load;
+      h.pressure = patch.normal.max_pressure;
+      h.approach = patch.normal.approach;
+    } else {
+      patch = solve_hertz_patch(h, G, nu, m);
+    }
     normal_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!patch.normal.converged)
@@ -271,6 +328,7 @@ void ContactPatchStep::run(StepContext& context) {
         try {
           TangentialSettings settings;
           settings.leading_edge = patch.leading_edge;
+          settings.row_longitudinal_slip = patch.row_longitudinal_slip;
           t = solve_steady_rolling(*patch.kernels, patch.normal.pressure, creep, friction, 1e-6,
                                    nullptr, settings);
         } catch (const std::invalid_argument& e) {
@@ -310,10 +368,22 @@ void ContactPatchStep::run(StepContext& context) {
   if (tractions)
     tractions->flush();
   const std::string section = "Step " + context.step_name + " (contact patch)";
-  context.summary.add(section, "Hertz a", h.a, "m");
-  context.summary.add(section, "Hertz b", h.b, "m");
-  context.summary.add(section, "Hertz maximum pressure", h.pressure, "Pa");
-  context.summary.add(section, "Hertz approach", h.approach, "m");
+  if (separation) {
+    const ContactGrid& g = patch.kernels->grid();
+    context.summary.add(section, "patch semi-axes from the pressure's moments, a", h.a, "m");
+    context.summary.add(section, "patch semi-axes from the pressure's moments, b", h.b, "m");
+    context.summary.add(section, "patch area", patch.normal.area, "m2");
+    context.summary.add(section, "maximum pressure", h.pressure, "Pa");
+    context.summary.add(section, "approach", h.approach, "m");
+    context.summary.add(section, "grid across, from y", g.y0, "m");
+    context.summary.add(section, "grid across, to y", g.y0 + g.my * g.dy, "m");
+    context.summary.add(section, "grid refits", refits.refits);
+  } else {
+    context.summary.add(section, "Hertz a", h.a, "m");
+    context.summary.add(section, "Hertz b", h.b, "m");
+    context.summary.add(section, "Hertz maximum pressure", h.pressure, "Pa");
+    context.summary.add(section, "Hertz approach", h.approach, "m");
+  }
   context.summary.add(section, "cases", static_cast<double>(cases_.size()));
   if (exact)
     context.summary.add(section, "exact cases without a unique steady state", refused);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "contact/laws/kalker_linear.hpp"
+#include "contact/laws/normal_problem.hpp"
 #include "framework/app/module.hpp"
 
 namespace railfe {
@@ -17,7 +18,8 @@ class ContactPatchStep : public AnalysisStep {
   /// Keeps the step's validated parameters.
   explicit ContactPatchStep(const Teuchos::ParameterList& parameters);
   /// Checks the theory names, the creepage (or force) arrays, that prescribed forces stay below
-  /// the traction bound, and that Hertz and Kalker's table apply.
+  /// the traction bound, and that Hertz and Kalker's table apply (Geometry separation: reads the
+  /// Separation file, and only the exact solver may run).
   void check(const CheckContext& context) override;
   /// Evaluates every case under every theory and writes the files.
   void run(StepContext& context) override;
@@ -27,6 +29,7 @@ class ContactPatchStep : public AnalysisStep {
   std::vector<std::string> theories_;
   std::vector<Creepages> cases_;               // per case; found at run time from forces_
   std::vector<std::array<double, 2>> forces_;  // Prescribe forces: Fx, Fy per case (N)
+  LateralSeparation lateral_;                  // Geometry separation: the Separation file
 };
 
 }  // namespace railfe

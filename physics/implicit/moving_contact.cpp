@@ -3,12 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <limits>
 #include <memory>
-#include <sstream>
 
 #include "framework/base/error.hpp"
+#include "framework/base/numeric_csv.hpp"
 #include "physics/elements/beam_interpolation.hpp"
 
 namespace railfe {
@@ -36,25 +35,17 @@ Irregularity::Irregularity(std::function<double(double)> vertical,
     : vertical_(std::move(vertical)), lateral_(std::move(lateral)) {}
 
 Irregularity Irregularity::from_csv(const std::string& path) {
-  std::ifstream file(path);
-  if (!file)
+  const auto rows = read_numeric_csv(path);
+  if (!rows)
     throw RunError("irregularity file '" + path + "' cannot be read");
   auto table = std::make_shared<std::array<std::vector<double>, 3>>();
-  std::string line;
-  std::getline(file, line);  // header
-  for (int number = 2; std::getline(file, line); ++number) {
-    if (line.find_first_not_of(" \t\r") == std::string::npos)
-      continue;
-    std::replace(line.begin(), line.end(), ',', ' ');
-    std::istringstream fields(line);
-    double s, vertical, lateral;
-    if (!(fields >> s >> vertical >> lateral) ||
-        (!(*table)[0].empty() && !(s > (*table)[0].back())))
-      throw RunError("irregularity file '" + path + "', line " + std::to_string(number) +
+  for (const NumericCsvRow& row : *rows) {
+    const std::vector<double>& v = row.values;
+    if (v.size() < 3 || ((*table)[0].size() > 0 && !(v[0] > (*table)[0].back())))
+      throw RunError("irregularity file '" + path + "', line " + std::to_string(row.line) +
                      ": expected s, vertical, lateral with s increasing");
-    (*table)[0].push_back(s);
-    (*table)[1].push_back(vertical);
-    (*table)[2].push_back(lateral);
+    for (int k = 0; k < 3; ++k)
+      (*table)[k].push_back(v[k]);
   }
   if ((*table)[0].size() < 2)
     throw RunError("irregularity file '" + path + "' needs at least two rows");
