@@ -76,6 +76,9 @@ FULL = {
     # heavier until its step is 1.5 x the solids' (0.99 kg on 29,184 nodes): 79 ns steps.
     "penalty": 4, "penalty_stiffness": "bulk modulus, softer side",
     "contact_mass_scaling": 1.3e-7,
+    # About 3 h of two cores: a checkpoint every 10,000 steps (0.79 ms, 6 min), and the same
+    # command resumes from it.
+    "checkpoint": 10000,
 }
 DEMO = {
     "title": "demo scale",
@@ -463,6 +466,11 @@ def deck(case, p, sleepers=True):
             p_("Patch times", "Array(double)", fmt(
                 [t for t in p["patch_times"] if t <= p["end_time"]] or [p["end_time"]]))]), 0),
             0),
+    ]
+    if p.get("checkpoint"):
+        roll.append(block("Checkpoint", "\n".join([
+            p_("Interval", "int", str(p["checkpoint"])), p_("Restart", "bool", "true")]), 0))
+    roll += [
         block("Output", "\n".join([
             p_("Energy interval", "int", "100"), p_("History interval", "int", "10"),
             block("Histories", "\n".join(histories), 0)]), 0)]
@@ -503,12 +511,19 @@ def header(case, p, seats, zone, arc, motion):
   Step "roll": explicit from the preload, wheel at 100 km/h and omega = V / {ROLLING_RADIUS} m;{element_scaling_text(p)}
   {torque_text(p)};
   {lateral}; {law}; {p['end_time'] * 1e3:g} ms.
-  Run:      railfe inputs/scenes/{name}.xml      (mpirun -np 2 ... for two ranks)
+  Run:      railfe inputs/scenes/{name}.xml      (mpirun -np 2 ... for two ranks){checkpoint_text(p)}
   Look at:  roll_contact_wheel-rail.csv (forces), roll_contact_wheel-rail_patch_*.png (patches),
             roll_histories.csv (rim velocity, axle box), roll.exo (ParaView).
   Charts:   python3 regression/charts/contact_force_history.py DIR/roll_contact_wheel-rail.csv
 -->
 """
+
+
+def checkpoint_text(p):
+    if not p.get("checkpoint"):
+        return ""
+    return (f"\n            A checkpoint every {p['checkpoint']:,} steps: after an interruption the same "
+            f"command,\n            on the same number of ranks, resumes the roll from it.")
 
 
 def approach_text(p, arc):
