@@ -167,14 +167,22 @@ HertzPatch solve_hertz_patch(const HertzContact& hertz, double G, double nu, int
   return patch;
 }
 
-double LateralSeparation::at(double at) const {
+namespace {
+
+// \p values at \p at, linear between the points \p y (increasing); +infinity outside them.
+double linear_between(const std::vector<double>& y, const std::vector<double>& values, double at) {
   if (y.size() < 2 || at < y.front() || at > y.back())
     return std::numeric_limits<double>::infinity();
-  const auto upper = std::upper_bound(y.begin(), y.end(), at);
-  const std::size_t k =
-      std::min<std::size_t>(static_cast<std::size_t>(upper - y.begin()), y.size() - 1);
+  const std::size_t k = std::min<std::size_t>(
+      static_cast<std::size_t>(std::upper_bound(y.begin(), y.end(), at) - y.begin()), y.size() - 1);
   const double t = (at - y[k - 1]) / (y[k] - y[k - 1]);
-  return s[k - 1] + t * (s[k] - s[k - 1]) - *std::min_element(s.begin(), s.end());
+  return values[k - 1] + t * (values[k] - values[k - 1]);
+}
+
+}  // namespace
+
+double LateralSeparation::at(double at) const {
+  return linear_between(y, s, at) - *std::min_element(s.begin(), s.end());
 }
 
 namespace {
@@ -235,6 +243,9 @@ HertzPatch solve_separation_patch(const LateralSeparation& lateral, double A, do
                                   " m): give the profiles' separation over a wider range");
     return grid;
   };
+  // The separation less its least value (LateralSeparation::at without its search for the least).
+  const double least = *std::min_element(lateral.s.begin(), lateral.s.end());
+  const auto gap = [&](double y) { return linear_between(lateral.y, lateral.s, y) - least; };
   HertzPatch patch;
   auto solve_on = [&](const ContactGrid& grid) {
     patch.kernels = std::make_unique<HalfSpaceKernels>(grid, G, nu);
@@ -242,7 +253,7 @@ HertzPatch solve_separation_patch(const LateralSeparation& lateral, double A, do
     for (int j = 0; j < my; ++j)
       for (int i = 0; i < mx; ++i)
         separation[static_cast<std::size_t>(j * mx + i)] =
-            A * grid.x(i) * grid.x(i) + lateral.at(grid.y(j));
+            A * grid.x(i) * grid.x(i) + gap(grid.y(j));
     patch.normal = solve_normal(*patch.kernels, separation, load, 1e-8, 2000);
   };
   // The contact lies where the separation is below the approach δ (the elastic displacements
@@ -255,7 +266,7 @@ HertzPatch solve_separation_patch(const LateralSeparation& lateral, double A, do
   for (;; ++refits) {
     double y_low = std::numeric_limits<double>::infinity(), y_high = -y_low;
     for (double y : lateral.y)
-      if (lateral.at(y) <= approach) {
+      if (gap(y) <= approach) {
         y_low = std::min(y_low, y - spacing);
         y_high = std::max(y_high, y + spacing);
       }
@@ -304,16 +315,8 @@ HertzPatch solve_separation_patch(const LateralSeparation& lateral, double A, do
           "rolling radii need one per point and a range of y that holds y = 0 (where the "
           "creepage is given)");
     const ContactGrid& g = patch.kernels->grid();
-    auto radius = [&](double y) {
-      const std::size_t k = std::min<std::size_t>(
-          std::max<std::size_t>(
-              static_cast<std::size_t>(std::upper_bound(lateral.y.begin(), lateral.y.end(), y) -
-                                       lateral.y.begin()),
-              1),
-          lateral.y.size() - 1);
-      const double t = (y - lateral.y[k - 1]) / (lateral.y[k] - lateral.y[k - 1]);
-      return lateral.rolling_radius[k - 1] +
-             t * (lateral.rolling_radius[k] - lateral.rolling_radius[k - 1]);
+    const auto radius = [&](double y) {
+      return linear_between(lateral.y, lateral.rolling_radius, y);
     };
     const double centre = radius(0);
     for (int j = 0; j < g.my; ++j)

@@ -116,12 +116,13 @@ TangentialSolution solve_tangential(const HalfSpaceKernels& kernels,
   // that target with the others held (a projected Gauss–Seidel step on the symmetric influence
   // matrix, so |q| <= μp and slip opposes traction), reading the target from the displacement
   // its neighbour ahead has just received.
-  // The longitudinal rigid slip of row j.
-  const auto longitudinal_slip = [&](int j) {
-    return creep.longitudinal + (settings.row_longitudinal_slip.empty()
-                                     ? -creep.spin * g.y(j)
-                                     : settings.row_longitudinal_slip[static_cast<std::size_t>(j)]);
-  };
+  // The longitudinal rigid slip of each row: the spin's −φ y, or the rows' given slip.
+  std::vector<double> longitudinal_slip(static_cast<std::size_t>(g.my));
+  for (int j = 0; j < g.my; ++j)
+    longitudinal_slip[static_cast<std::size_t>(j)] =
+        settings.row_longitudinal_slip.empty()
+            ? creep.longitudinal - creep.spin * g.y(j)
+            : creep.longitudinal + settings.row_longitudinal_slip[static_cast<std::size_t>(j)];
   std::vector<double> ux(is_relevant.size(), 0.0), uy(is_relevant.size(), 0.0);
   // Adds the displacements of a traction change on element (i, j) to the relevant points.
   const auto spread_change = [&](int i, int j, double dqx, double dqy) {
@@ -138,7 +139,7 @@ TangentialSolution solve_tangential(const HalfSpaceKernels& kernels,
   };
   if (settings.start_in_full_slip)
     for (int e : contact) {
-      const double wx = longitudinal_slip(e / mx);
+      const double wx = longitudinal_slip[static_cast<std::size_t>(e / mx)];
       const double wy = creep.lateral + creep.spin * g.x(e % mx);
       const double w = std::hypot(wx, wy);
       if (w > 0) {
@@ -166,7 +167,8 @@ TangentialSolution solve_tangential(const HalfSpaceKernels& kernels,
       // h = 2 dx / 3).
       const Local& l = locals[e];
       const double c1 = l.c1, c2 = l.c2, h = g.dx / (c1 + c2);
-      const double wx = longitudinal_slip(j), wy = creep.lateral + creep.spin * x;
+      const double wx = longitudinal_slip[static_cast<std::size_t>(j)],
+                   wy = creep.lateral + creep.spin * x;
       const double bx = (c1 * ux[d + 1] + c2 * ux[d + 2]) / (c1 + c2) - wx * h;
       const double by = (c1 * uy[d + 1] + c2 * uy[d + 2]) / (c1 + c2) - wy * h;
       // Coulomb friction needs no slip speed (the square roots here cost a tenth of a sweep).

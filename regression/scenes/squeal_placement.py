@@ -60,6 +60,21 @@ def rail_head_top(u):
     return v / 1000
 
 
+def inclined_head(rail_offset, inclination):
+    """The 54E1 head's top as points (y, z) every 0.01 mm, inclined 1:`inclination` about +x
+    (the head tilts towards +y) and shifted by `rail_offset` (m), in increasing y."""
+    alpha = -math.atan(1 / inclination)
+    head = []
+    for k in range(-3500, 3501):
+        u = k * 1e-5
+        v = rail_head_top(u)
+        if v is None:
+            continue
+        head.append((u * math.cos(alpha) - v * math.sin(alpha) + rail_offset,
+                     u * math.sin(alpha) + v * math.cos(alpha)))
+    return head
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--radius", type=float, default=0.46)
@@ -67,19 +82,10 @@ def main():
     parser.add_argument("--depth", type=float, default=2e-5)
     parser.add_argument("--inclination", type=float, default=40)
     args = parser.parse_args()
-    alpha = -math.atan(1 / args.inclination)  # about +x: the head tilts towards +y
     wheel = wheel_profile()
     z0 = interpolate(wheel, 0.0)
     # The inclined head as points (y, z), then the wheel's lowest circle over it.
-    head = []
-    for k in range(-3500, 3501):
-        u = k * 1e-5
-        v = rail_head_top(u)
-        if v is None:
-            continue
-        y = u * math.cos(alpha) - v * math.sin(alpha) + args.rail_offset
-        z = u * math.sin(alpha) + v * math.cos(alpha)
-        head.append((y, z))
+    head = inclined_head(args.rail_offset, args.inclination)
     best, where = -1e9, None
     for y, z in head:
         zw = interpolate(wheel, y)

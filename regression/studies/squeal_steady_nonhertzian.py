@@ -59,20 +59,11 @@ def separation_rows(angle):
     wheel's radius at y."""
     wheel = placement.wheel_profile()
     z0 = placement.interpolate(wheel, 0.0)
-    alpha = -math.atan(1 / INCLINATION)
-    head = []
-    for k in range(-3500, 3501):
-        u = k * 1e-5
-        v = placement.rail_head_top(u)
-        if v is not None:
-            head.append((u * math.cos(alpha) - v * math.sin(alpha) + RAIL_OFFSET,
-                         u * math.sin(alpha) + v * math.cos(alpha)))
-    head.sort()
+    head = sorted(placement.inclined_head(RAIL_OFFSET, INCLINATION))
     rows = []
     for k in range(-500, 501):
         y = k * 5e-5
-        rail = next(z0r + (z1r - z0r) * (y - y0r) / (y1r - y0r)
-                    for (y0r, z0r), (y1r, z1r) in zip(head, head[1:]) if y0r <= y <= y1r)
+        rail = placement.interpolate(head, y)
         radius = RADIUS + placement.interpolate(wheel, y) - z0
         rows.append((y, -radius - rail, radius))  # the wheel's bottom less the rail, + a constant
     least = min(s for _, s, _ in rows)
