@@ -25,8 +25,11 @@ void Progress::update(double done) {
   } else if (total_is_bound_) {
     std::printf("[%s] %.0f done (at most %.0f), %.1f s elapsed, %.1f s each\n", label_.c_str(),
                 done, total_, elapsed, elapsed / done);
+  } else if (done <= start_) {
+    std::printf("[%s] %5.1f%% done, %.1f s elapsed\n", label_.c_str(), 100.0 * fraction, elapsed);
   } else {
-    const double remaining = elapsed * (1.0 - fraction) / fraction;
+    const double since = done - start_;
+    const double remaining = elapsed * (total_ - done) / since;
     std::printf("[%s] %5.1f%% done, %.1f s elapsed, about %.0f s to go\n", label_.c_str(),
                 100.0 * fraction, elapsed, remaining);
   }

@@ -18,6 +18,9 @@ class Progress {
   /// go that would assume all of them.
   Progress(std::string label, double total, const Communicator& comm, bool quiet,
            double interval_seconds = 5.0, bool total_is_bound = false);
+  /// Says that \p done units were complete before this phase began (a run resumed from a
+  /// checkpoint), so that the time to go is reckoned from the work done since.
+  void start_at(double done) { start_ = done; }
   /// Records that \p done units are complete; prints when the interval has passed.
   void update(double done);
   /// Prints the final line with the total time.
@@ -31,6 +34,7 @@ class Progress {
   bool total_is_bound_;
   Stopwatch clock_;
   double last_print_ = 0;
+  double start_ = 0;
 };
 
 }  // namespace railfe

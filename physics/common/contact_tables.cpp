@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 
-#include "framework/output/csv_writer.hpp"
 #include "physics/common/contact_pairs.hpp"
 
 namespace railfe {
@@ -79,8 +78,9 @@ const std::vector<std::string>& contact_patch_columns() {
   return columns;
 }
 
-void write_contact_patch(CsvWriter& file, double time, const PenaltyContactPair& pair,
-                         const ContactPairs& contact) {
+std::vector<std::vector<double>> contact_patch_rows(double time, const PenaltyContactPair& pair,
+                                                    const ContactPairs& contact) {
+  std::vector<std::vector<double>> rows;
   const auto frame = contact_frame(pair);
   // Positions in the contact plane about the force-weighted centre of the patch.
   Vector centre{};
@@ -105,13 +105,14 @@ void write_contact_patch(CsvWriter& file, double time, const PenaltyContactPair&
     for (int d = 0; d < 3; ++d)
       offset[d] = slave.point[d] - centre[d];
     const double node = static_cast<double>(contact.surface_node(geometry.slave_nodes[s]) + 1);
-    file.write_row(std::vector<double>{
-        time, node, slave.point[0], slave.point[1], slave.point[2], dot(offset, frame[1]),
-        dot(offset, frame[2]), slave.normal_force / area,
-        dot(slave.tangential_force, frame[1]) / area, dot(slave.tangential_force, frame[2]) / area,
-        dot(slave.slip_velocity, frame[1]), dot(slave.slip_velocity, frame[2]),
-        slave.slipping ? 1.0 : 0.0, slave.gap, area});
+    rows.push_back({time, node, slave.point[0], slave.point[1], slave.point[2],
+                    dot(offset, frame[1]), dot(offset, frame[2]), slave.normal_force / area,
+                    dot(slave.tangential_force, frame[1]) / area,
+                    dot(slave.tangential_force, frame[2]) / area,
+                    dot(slave.slip_velocity, frame[1]), dot(slave.slip_velocity, frame[2]),
+                    slave.slipping ? 1.0 : 0.0, slave.gap, area});
   }
+  return rows;
 }
 
 const std::vector<std::string>& contact_nodal_field_names() {

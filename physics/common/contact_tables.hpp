@@ -14,7 +14,6 @@
 namespace railfe {
 
 class ContactPairs;
-class CsvWriter;
 class PenaltyContactPair;
 
 /// The contact frame of \p pair at its last evaluation: n, t1, t2 (see the file comment).
@@ -29,10 +28,10 @@ std::vector<double> contact_history_row(double time, const PenaltyContactPair& p
 /// Column names of a patch file.
 const std::vector<std::string>& contact_patch_columns();
 
-/// Writes one row per active slave node of \p pair at \p time (s) to \p file (global node
-/// numbers from \p contact).
-void write_contact_patch(CsvWriter& file, double time, const PenaltyContactPair& pair,
-                         const ContactPairs& contact);
+/// The rows of a patch file: one per active slave node of \p pair at \p time (s), in the order
+/// of contact_patch_columns() (global node numbers from \p contact).
+std::vector<std::vector<double>> contact_patch_rows(double time, const PenaltyContactPair& pair,
+                                                    const ContactPairs& contact);
 
 /// Names of the contact's nodal fields in Exodus snapshots: pressure (Pa), shear traction x, y,
 /// z (Pa), slip velocity x, y, z (m/s) and status (0 open, 1 stick, 2 slip), all on slave nodes

@@ -11,7 +11,8 @@ namespace railfe {
 
 namespace {
 
-constexpr char kMagic[8] = {'R', 'A', 'I', 'L', 'F', 'E', 'C', '1'};
+// The last character is the format: 2 since the contact recorder carries its patch files.
+constexpr char kMagic[8] = {'R', 'A', 'I', 'L', 'F', 'E', 'C', '2'};
 
 }  // namespace
 
@@ -48,8 +49,13 @@ CheckpointSections read_checkpoint(const std::string& path, int n_ranks) {
   std::int64_t header[2] = {0, 0};
   file.read(magic, sizeof magic);
   file.read(reinterpret_cast<char*>(header), sizeof header);
-  if (!file || std::memcmp(magic, kMagic, sizeof magic) != 0)
+  if (!file || std::memcmp(magic, kMagic, sizeof magic - 1) != 0)
     throw RunError("'" + path + "' is not a railfe checkpoint");
+  if (magic[7] != kMagic[7])
+    throw RunError("the checkpoint '" + path + "' is in format " + std::string(1, magic[7]) +
+                   ", written by another version of railfe; this one reads format " +
+                   std::string(1, kMagic[7]) +
+                   ": remove it (or set Checkpoint/Restart false) and run from the start");
   if (header[0] != n_ranks)
     throw RunError("the checkpoint '" + path + "' was written by a run on " +
                    std::to_string(header[0]) + " ranks; resume it on that many (this run has " +

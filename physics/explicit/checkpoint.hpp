@@ -18,8 +18,9 @@ using CheckpointSections = std::vector<std::vector<double>>;
 /// \p n_ranks in the header. Throws RunError if the file cannot be written.
 void write_checkpoint(const std::string& path, int n_ranks, const CheckpointSections& sections);
 
-/// Reads what write_checkpoint() wrote. Throws RunError, naming \p path, if the file is damaged
-/// or was written by a run on a different number of ranks than \p n_ranks.
+/// Reads what write_checkpoint() wrote. Throws RunError, naming \p path, if the file is damaged,
+/// was written by a run on a different number of ranks than \p n_ranks, or is in another format
+/// (another version of railfe, whose sections this one would misread).
 CheckpointSections read_checkpoint(const std::string& path, int n_ranks);
 
 /// Whether every rank of \p comm finds its file \p path (collective).

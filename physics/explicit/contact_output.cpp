@@ -29,6 +29,7 @@ ContactRecorder::ContactRecorder(const ExplicitSettings& settings, const Explici
         output.staging_path(patch_name(p, k, ".png"));
     }
   next_patch_.assign(settings.contact_pairs.size(), 0);
+  patch_rows_.resize(settings.contact_pairs.size());
   flexibility_.resize(settings.contact_pairs.size());
 }
 
@@ -78,7 +79,16 @@ void ContactRecorder::write_patch(std::size_t p, std::size_t index) {
   const ContactPairs& contact = solver_.contact();
   CsvWriter patch(output_.staging_path(patch_name(p, index, ".csv")), contact_patch_columns(),
                   root_);
-  write_contact_patch(patch, solver_.time(), contact.pairs()[p], contact);
+  const auto rows = contact_patch_rows(solver_.time(), contact.pairs()[p], contact);
+  std::vector<double> flat;
+  for (const auto& row : rows) {
+    patch.write_row(row);
+    flat.insert(flat.end(), row.begin(), row.end());
+  }
+  if (root_) {
+    patch_rows_[p].resize(index + 1);
+    patch_rows_[p][index] = std::move(flat);
+  }
 }
 
 std::vector<std::array<std::string, 2>> ContactRecorder::patch_charts() const {
@@ -137,6 +147,14 @@ std::vector<double> ContactRecorder::state() const {
     for (const auto& row : rows_[p])
       values.insert(values.end(), row.begin(), row.end());
   }
+  // The patch files, as a count of files, then each file's count of numbers and its numbers.
+  for (const auto& patches : patch_rows_) {
+    values.push_back(static_cast<double>(patches.size()));
+    for (const auto& patch : patches) {
+      values.push_back(static_cast<double>(patch.size()));
+      values.insert(values.end(), patch.begin(), patch.end());
+    }
+  }
   return values;
 }
 
@@ -154,6 +172,23 @@ void ContactRecorder::restore(const std::vector<double>& values) {
     }
     for (const auto& row : rows_[p])
       histories_[p]->write_row(row);
+  }
+  const std::size_t patch_width = contact_patch_columns().size();
+  for (std::size_t p = 0; p < patch_rows_.size(); ++p) {
+    patch_rows_[p].resize(static_cast<std::size_t>(values.at(k++)));
+    for (std::size_t index = 0; index < patch_rows_[p].size(); ++index) {
+      const auto size = static_cast<std::size_t>(values.at(k++));
+      auto& patch = patch_rows_[p][index];
+      patch.assign(values.begin() + static_cast<std::ptrdiff_t>(k),
+                   values.begin() + static_cast<std::ptrdiff_t>(k + size));
+      k += size;
+      CsvWriter file(output_.staging_path(patch_name(p, index, ".csv")), contact_patch_columns(),
+                     root_);
+      for (std::size_t r = 0; r + patch_width <= patch.size(); r += patch_width)
+        file.write_row(
+            std::vector<double>(patch.begin() + static_cast<std::ptrdiff_t>(r),
+                                patch.begin() + static_cast<std::ptrdiff_t>(r + patch_width)));
+    }
   }
 }
 

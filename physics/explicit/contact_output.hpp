@@ -46,9 +46,10 @@ class ContactRecorder {
   /// touched, and pairs whose penalty layer costs more than kFlexibilityWarning of the creep
   /// force where the patch sticks.
   std::vector<std::string> summarise(RunSummary& summary, const std::string& section) const;
-  /// Rows written so far and the next patch, for checkpoints.
+  /// Rows written so far, the next patch and the patch files written so far, for checkpoints.
   std::vector<double> state() const;
-  /// Restores state() and rewrites the rows (rank 0).
+  /// Restores state() and rewrites the rows and the patch files (rank 0), so that a resumed
+  /// run's results directory holds every patch, also those written before the interruption.
   void restore(const std::vector<double>& values);
 
  private:
@@ -63,7 +64,8 @@ class ContactRecorder {
   std::vector<std::unique_ptr<CsvWriter>> histories_;
   std::vector<std::vector<std::vector<double>>> rows_;  // per pair
   std::vector<std::size_t> next_patch_;                 // per pair: index of the next patch time
-  std::vector<PenaltyFlexibility> flexibility_;         // per pair
+  std::vector<std::vector<std::vector<double>>> patch_rows_;  // per pair and patch (root)
+  std::vector<PenaltyFlexibility> flexibility_;               // per pair
   long long last_step_ = -1;
 };
 

@@ -275,6 +275,8 @@ void ExplicitStep::run(StepContext& context) {
   }
 
   Progress progress = context.progress("time", settings.end_time);
+  if (restarted)
+    progress.start_at(solver.time());
   Stopwatch loop_clock;
   const std::clock_t loop_cpu_start = std::clock();
   const long long first_step = solver.n_steps();

@@ -477,7 +477,8 @@ void StaticsStep::write_contact(StepContext& context, const ContactPairs& contac
     totals.write_row(contact_history_row(0, pair));
     CsvWriter patch(context.output.staging_path(stem + "_patch.csv"), contact_patch_columns(),
                     root);
-    write_contact_patch(patch, 0, pair, contact);
+    for (const auto& row : contact_patch_rows(0, pair, contact))
+      patch.write_row(row);
   }
 }
 

@@ -7,6 +7,7 @@ Longitudinal direction, s2 across).
     /usr/bin/python3 regression/charts/contact_patch_map.py <step>_contact_<pair>_patch_<k>.csv out.png
 """
 import csv
+import math
 import sys
 
 import matplotlib
@@ -46,6 +47,21 @@ def slip_panel(ax, s1, s2, slip1, slip2, slipping, unit="m/s", marker_size=30):
     largest = max((abs(complex(slip1[i], slip2[i])) for i in slip), default=0.0)
     ax.set_title(f"micro-slip (largest {largest:.3g} {unit}) over stick and slip areas")
     ax.legend(loc="upper right", fontsize=8)
+
+
+def shear_angles(shear1, shear2):
+    """The direction of each shear traction, degrees from s1 towards s2."""
+    return [math.degrees(math.atan2(b, a)) for a, b in zip(shear1, shear2)]
+
+
+def shear_angle_panel(fig, ax, s1, s2, shear1, shear2, limit=180.0, marker_size=40):
+    """The direction of the shear traction at each point, degrees from s1 (towards s2), as
+    colour over +-`limit` (beyond it clipped): how the traction turns across the patch as
+    lateral creepage grows."""
+    dots = ax.scatter(s1, s2, c=shear_angles(shear1, shear2), cmap="coolwarm", vmin=-limit,
+                      vmax=limit, s=marker_size, marker="s")
+    fig.colorbar(dots, ax=ax, label="shear direction (deg from s1)")
+    ax.set_title("direction of the shear traction")
 
 
 def main(patch_csv, png):

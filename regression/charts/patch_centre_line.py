@@ -26,12 +26,13 @@ COLUMNS = ("time_s", "s1_m", "s2_m", "pressure_Pa", "shear_1_Pa", "shear_2_Pa",
 
 
 def read_patch(path):
-    """The columns of a patch file as numpy arrays (area_m2 too where the file has it)."""
+    """The columns of a patch file as numpy arrays (node, area_m2 and the positions x_m, y_m, z_m
+    too where the file has them)."""
     with open(path) as f:
         rows = list(csv.DictReader(f))
     if not rows:
         raise SystemExit(f"{path}: no node in contact")
-    names = COLUMNS + (("area_m2",) if "area_m2" in rows[0] else ())
+    names = COLUMNS + tuple(n for n in ("node", "area_m2", "x_m", "y_m", "z_m") if n in rows[0])
     return {name: np.array([float(r[name]) for r in rows]) for name in names}
 
 

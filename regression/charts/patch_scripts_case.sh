@@ -13,7 +13,15 @@ rm -rf "$out" && mkdir -p "$out"
   "$samples/squeal_probe_lateral_patch_8.csv"
 "$python" "$here/patch_vs_exact.py" --railfe "$railfe" --mu 0.45 --table "$out/table3.csv" \
   --png "$out/patch_vs_exact.png" --work "$out/work" "$samples/squeal_probe_lateral_patch_8.csv"
-test -s "$out/centre_line.png" && test -s "$out/patch_vs_exact.png"
+# The same patch on the profiles' separation (no ellipse): the creepages found must carry the
+# forces (checked inside patch_vs_exact.py), the row must say so and the patch be the profiles'.
+"$python" "$here/patch_vs_exact.py" --railfe "$railfe" --mu 0.45 --table "$out/table3.csv" \
+  --geometry separation --A 1.086 --spin 0.1 \
+  --separation "$here/../../docs/data/squeal_separation_s1002_54e1.csv" \
+  --png "$out/patch_vs_exact_profiles.png" --work "$out/work_profiles" \
+  "$samples/squeal_probe_lateral_patch_8.csv"
+test -s "$out/centre_line.png" && test -s "$out/patch_vs_exact.png" \
+  && test -s "$out/patch_vs_exact_profiles.png"
 # Three nodes on the centre line at each instant; FN, Fx, Fy summed from pressure, shear and
 # area (the run's own history reads 104.75 kN, -1.56 kN, -4.85 kN 1.3 us later); the creepages
 # found carry them (checked inside patch_vs_exact.py); values from the scripts' first run.
@@ -22,7 +30,11 @@ import csv, math, sys
 out = sys.argv[1]
 line = list(csv.DictReader(open(f"{out}/centre_line.csv")))
 assert len(line) == 6, f"{len(line)} centre-line rows, expected 6"
-row = list(csv.DictReader(open(f"{out}/table3.csv")))[-1]
+rows = list(csv.DictReader(open(f"{out}/table3.csv")))
+row, profiles = rows[0], rows[1]
+# The profiles' patch is wider across than the probe's ellipse (the conformal S1002 on 54E1).
+assert profiles["geometry"] == "separation", profiles["geometry"]
+assert float(profiles["b_m"]) > 1.2 * float(row["b_m"]), (profiles["b_m"], row["b_m"])
 expected = {"FN_N": 104837.15577497277, "Fx_N": -1570.8802307167803, "Fy_N": -4808.361821655628,
             "xi": 7.06837004430585e-05, "eta": 2.4718794206182737e-04}
 for key, value in expected.items():

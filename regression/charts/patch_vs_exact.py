@@ -14,7 +14,11 @@ The Hertz patch's semi-axes come from --geometry: "moments" (default) a = sqrt(5
 b = sqrt(5 <s2^2>), the pressure-weighted second moments about the centre, which a Hertz
 ellipse meets exactly and a coarse mesh's few nodes do not bias as their extent does; "extent":
 half the nodes' extent plus half a node spacing; or "curvatures A B" (1/m): Hertz from the
-relative curvatures of the profiles. Forces are the FE's on the slave body (the wheel) in the
+relative curvatures of the profiles. Or no ellipse: "separation" gives the exact solver the
+undeformed separation A x^2 + s(y) of the real profiles (--separation, a CSV of y, s and
+optionally the rolling radius R(y), as the contact patch step's Separation file takes it; --A
+the longitudinal curvature), as CONTACT takes profiles; a and b are then the exact patch's
+moments. Its y must be the FE's s2 direction. Forces are the FE's on the slave body (the wheel) in the
 patch's frame (s1 along the rolling direction, s2 = n x s1): the exact solver takes them as body
 1's, with x = s1 and y = s2; spin from --spin (default 0: the patch file does not hold it).
 
@@ -23,6 +27,7 @@ patch's frame (s1 along the rolling direction, s2 = n x s1): the exact solver ta
 """
 import argparse
 import csv
+import math
 import os
 import sys
 
@@ -34,7 +39,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path[:0] = [HERE, os.path.join(HERE, "..", "studies")]
-from contact_patch_map import pressure_shear_panel, slip_panel  # noqa: E402
+from contact_patch_map import (pressure_shear_panel, shear_angle_panel, shear_angles,  # noqa: E402
+                               slip_panel)
 from patch_centre_line import node_spacing, read_patch  # noqa: E402
 from railfe_runs import csv_rows, run_deck  # noqa: E402
 
@@ -63,7 +69,8 @@ DECK = """<!-- Written by regression/charts/patch_vs_exact.py for {patch} -->
 """
 PARAMETER = '      <Parameter name="{}" type="double" value="{!r}"/>'
 TABLE = ["patch", "time_s", "FN_N", "Fx_N", "Fy_N", "Ft_over_muN", "geometry", "a_m", "b_m",
-         "xi", "eta", "phi_per_m", "fe_adhesion_share", "exact_adhesion_share"]
+         "xi", "eta", "phi_per_m", "fe_adhesion_share", "exact_adhesion_share",
+         "fe_tilt_deg", "exact_tilt_deg", "force_angle_deg"]
 
 
 def patch_forces(patch):
@@ -87,9 +94,26 @@ def semi_axes(patch, how):
     return float(np.sqrt(5 * moment[0])), float(np.sqrt(5 * moment[1]))
 
 
+def orientation(s1, s2, weight):
+    """Tilt (deg, -90 to 90) of the patch's long axis from s2 (across the rail), positive from s2
+    towards -s1: the principal axis of the larger weighted second moment about the weighted
+    centre. 0 for a patch long across the rail and symmetric about s1."""
+    c1, c2 = (np.sum(weight * s) / np.sum(weight) for s in (s1, s2))
+    m11, m22, m12 = (np.sum(weight * u * v) / np.sum(weight)
+                     for u, v in ((s1 - c1, s1 - c1), (s2 - c2, s2 - c2), (s1 - c1, s2 - c2)))
+    from_s1 = np.degrees(0.5 * np.arctan2(2 * m12, m11 - m22))  # the long axis, from s1
+    return float(from_s1 % 180 - 90)
+
+
 def solve_exact(args, patch_path, FN, Fx, Fy):
     """Runs the contact patch step; returns the inverse row, the exact tractions and a, b."""
-    if args.geometry == "curvatures":
+    if args.geometry == "separation":
+        geometry = "\n".join([
+            '      <Parameter name="Geometry" type="string" value="separation"/>',
+            '      <Parameter name="Separation file" type="string" value="{}"/>'.format(
+                os.path.abspath(args.separation)), PARAMETER.format("A", args.A)])
+        a = b = float("nan")
+    elif args.geometry == "curvatures":
         geometry = "\n".join(['      <Parameter name="Geometry" type="string" value="curvatures"/>',
                               PARAMETER.format("A", args.A), PARAMETER.format("B", args.B)])
         a = b = float("nan")
@@ -110,17 +134,25 @@ def solve_exact(args, patch_path, FN, Fx, Fy):
     return inverse, tractions, float(forces["a_m"]), float(forces["b_m"])
 
 
-def chart(png, patch, tractions, speed, title):
-    """The FE patch (top) above the exact solver's (bottom), on the same axes."""
-    fig, axes = plt.subplots(2, 2, figsize=(12, 9.5), sharex=True, sharey=True)
+def chart(png, patch, tractions, speed, title, across_shift=0.0):
+    """The FE patch (top) above the exact solver's (bottom), on the same axes; the exact solver's
+    y less `across_shift` (m)."""
+    fig, axes = plt.subplots(2, 3, figsize=(17, 9.5), sharex=True, sharey=True)
     s1, s2 = 1e3 * patch["s1_m"], 1e3 * patch["s2_m"]
     pressure_shear_panel(fig, axes[0, 0], s1, s2, 1e-6 * patch["pressure_Pa"],
                          patch["shear_1_Pa"], patch["shear_2_Pa"])
     slip_panel(axes[0, 1], s1, s2, patch["slip_velocity_1_m/s"], patch["slip_velocity_2_m/s"],
                patch["slipping"] > 0.5)
+    # One colour scale for both rows: 5 degrees beyond the largest turn of either, at least 10.
+    column_q = [(patch["shear_1_Pa"], patch["shear_2_Pa"]),
+                ([float(r["qx_Pa"]) for r in tractions if float(r["p_Pa"]) > 0],
+                 [float(r["qy_Pa"]) for r in tractions if float(r["p_Pa"]) > 0])]
+    largest = max(abs(a) for q1, q2 in column_q for a in shear_angles(q1, q2))
+    limit = min(180.0, max(10.0, 5 * math.ceil(largest / 5 + 1)))
+    shear_angle_panel(fig, axes[0, 2], s1, s2, patch["shear_1_Pa"], patch["shear_2_Pa"], limit)
     column = {k: np.array([float(r[k]) for r in tractions])
               for k in ("x_m", "y_m", "p_Pa", "qx_Pa", "qy_Pa", "slip_x", "slip_y")}
-    x, y = 1e3 * column["x_m"], 1e3 * column["y_m"]
+    x, y = 1e3 * column["x_m"], 1e3 * (column["y_m"] - across_shift)
     # Arrows on every third element each way, so that the grid's arrows stay readable.
     step = [np.min(np.diff(np.unique(np.round(v, 9)))) for v in (x, y)]
     arrows = [i for i in range(len(x))
@@ -129,6 +161,9 @@ def chart(png, patch, tractions, speed, title):
                          column["qy_Pa"], marker_size=12, arrows=arrows)
     slip_panel(axes[1, 1], x, y, speed * column["slip_x"], speed * column["slip_y"],
                [r["state"] == "slip" for r in tractions], marker_size=10)
+    loaded = column["p_Pa"] > 0
+    shear_angle_panel(fig, axes[1, 2], x[loaded], y[loaded], column["qx_Pa"][loaded],
+                      column["qy_Pa"][loaded], limit, marker_size=12)
     for ax, label in zip(axes[:, 0], ("finite elements", "exact steady rolling")):
         ax.set_ylabel(f"{label}\ns2 across (mm)")
     for ax in axes.flat:
@@ -146,10 +181,12 @@ def main():
     parser.add_argument("patch", help="a patch file <step>_contact_<pair>_patch_<k>.csv")
     parser.add_argument("--railfe", default="build/bin/railfe")
     parser.add_argument("--mu", type=float, required=True, help="Coulomb friction coefficient")
-    parser.add_argument("--geometry", choices=("moments", "extent", "curvatures"),
+    parser.add_argument("--geometry", choices=("moments", "extent", "curvatures", "separation"),
                         default="moments")
-    parser.add_argument("--A", type=float, help="relative curvature along (1/m), curvatures")
+    parser.add_argument("--A", type=float,
+                        help="relative curvature along (1/m): curvatures, separation")
     parser.add_argument("--B", type=float, help="relative curvature across (1/m), curvatures")
+    parser.add_argument("--separation", help="separation CSV (y, s[, R]), for separation")
     parser.add_argument("--spin", type=float, default=0.0, help="spin creepage (1/m)")
     parser.add_argument("--speed", type=float, default=100 / 3.6, help="rolling speed (m/s)")
     parser.add_argument("--E", type=float, default=210e9)
@@ -161,6 +198,14 @@ def main():
     args = parser.parse_args()
     if args.geometry == "curvatures" and (args.A is None or args.B is None):
         parser.error("--geometry curvatures needs --A and --B")
+    if args.geometry == "separation" and (args.A is None or not args.separation):
+        parser.error("--geometry separation needs --A and --separation")
+    if args.A is not None and args.geometry not in ("curvatures", "separation"):
+        parser.error("--A is read only with --geometry curvatures or separation")
+    if args.B is not None and args.geometry != "curvatures":
+        parser.error("--B is read only with --geometry curvatures")
+    if args.geometry != "separation" and args.separation:
+        parser.error("--separation is read only with --geometry separation")
     patch = read_patch(args.patch)
     FN, Fx, Fy, fe_stick = patch_forces(patch)
     inverse, tractions, a, b = solve_exact(args, args.patch, FN, Fx, Fy)
@@ -172,17 +217,27 @@ def main():
     time = float(patch["time_s"][0])
     row = [os.path.basename(args.patch), time, FN, Fx, Fy, np.hypot(Fx, Fy) / mu_n,
            args.geometry, a, b, float(inverse["xi"]), float(inverse["eta"]), args.spin,
-           fe_stick, float(inverse["adhesion_fraction"])]
+           fe_stick, float(inverse["adhesion_fraction"]),
+           orientation(patch["s1_m"], patch["s2_m"], patch["pressure_Pa"] * patch["area_m2"]),
+           orientation(np.array([float(r["x_m"]) for r in tractions]),
+                       np.array([float(r["y_m"]) for r in tractions]),
+                       np.array([float(r["p_Pa"]) for r in tractions])),
+           float(np.degrees(np.arctan2(Fy, Fx)))]
     new = not os.path.exists(args.table)
     with open(args.table, "a", newline="") as f:
         out = csv.writer(f)
         if new:
             out.writerow(TABLE)
         out.writerow(row)
+    # The separation's y is the track's, the FE's s2 is about the patch's centre: both drawn
+    # about the FE centre's track y, so that the chart shows where each patch lies.
+    weight = patch["pressure_Pa"] * patch["area_m2"]
+    shift = (float(np.sum(weight * patch["y_m"]) / np.sum(weight))
+             if args.geometry == "separation" else 0.0)
     chart(args.png, patch, tractions, args.speed,
           f"t = {1e3 * time:.4f} ms: FN {FN / 1e3:.2f} kN, Fx {Fx / 1e3:.3f} kN, Fy "
           f"{Fy / 1e3:.3f} kN; exact solver (a {1e3 * a:.2f}, b {1e3 * b:.2f} mm, "
-          f"{args.geometry}): ξ {row[9]:.4g}, η {row[10]:.4g}")
+          f"{args.geometry}): ξ {row[9]:.4g}, η {row[10]:.4g}", shift)
     print(",".join(TABLE))
     print(",".join(str(v) for v in row))
 

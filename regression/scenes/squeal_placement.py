@@ -75,6 +75,24 @@ def inclined_head(rail_offset, inclination):
     return head
 
 
+def separation_rows(angle, radius=0.46, rail_offset=-0.0025, inclination=40, wheel_shift=0.0):
+    """Rows (y, s, R) every 0.05 mm over +-25 mm: the gap between the wheel's lowest circle and
+    the inclined rail's head, measured normal to a contact plane at `angle` (rad), and the
+    wheel's radius at y. `wheel_shift` (m) moves the wheel along +y (the axle's lateral
+    displacement); y stays the track's."""
+    wheel = wheel_profile()
+    z0 = interpolate(wheel, 0.0)
+    head = sorted(inclined_head(rail_offset, inclination))
+    rows = []
+    for k in range(-500, 501):
+        y = k * 5e-5
+        rail = interpolate(head, y)
+        r = radius + interpolate(wheel, y - wheel_shift) - z0
+        rows.append((y, -r - rail, r))  # the wheel's bottom less the rail, + a constant
+    least = min(s for _, s, _ in rows)
+    return [(y / math.cos(angle), (s - least) * math.cos(angle), r) for y, s, r in rows]
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--radius", type=float, default=0.46)

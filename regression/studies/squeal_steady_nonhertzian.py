@@ -53,23 +53,6 @@ MU, SPEED = 0.45, 100 / 3.6
 FREE_SCAN = [k * 1e-4 for k in range(-6, 13)]  # xi(0) of the free twin's calibration
 
 
-def separation_rows(angle):
-    """Rows (y, s, R) every 0.05 mm over +-25 mm: the gap between the wheel's lowest circle and
-    the inclined rail's head, measured normal to a contact plane at `angle` (rad), and the
-    wheel's radius at y."""
-    wheel = placement.wheel_profile()
-    z0 = placement.interpolate(wheel, 0.0)
-    head = sorted(placement.inclined_head(RAIL_OFFSET, INCLINATION))
-    rows = []
-    for k in range(-500, 501):
-        y = k * 5e-5
-        rail = placement.interpolate(head, y)
-        radius = RADIUS + placement.interpolate(wheel, y) - z0
-        rows.append((y, -radius - rail, radius))  # the wheel's bottom less the rail, + a constant
-    least = min(s for _, s, _ in rows)
-    return [(y / math.cos(angle), (s - least) * math.cos(angle), r) for y, s, r in rows]
-
-
 DECK = """<ParameterList name="railfe">
   <Parameter name="Title" type="string" value="Squeal steady case: exact solutions on the profiles"/>
   <ParameterList name="Steps">
@@ -95,7 +78,7 @@ STEP = """    <ParameterList name="{name}">
 def exact_references(railfe, work, label, fe):
     """The three references' Fx (N) for FE row `fe`, and the profiles' patch (a, b, pmax)."""
     name = label.replace(" ", "_")
-    rows = separation_rows(fe["contact_angle_rad"])
+    rows = placement.separation_rows(fe["contact_angle_rad"], RADIUS, RAIL_OFFSET, INCLINATION)
     plain = os.path.join(work, f"separation_{name}.csv")
     write_rows(plain, [{"y_m": y, "separation_m": s} for y, s, _ in rows])
 
