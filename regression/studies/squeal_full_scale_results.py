@@ -50,6 +50,7 @@ ROOT = os.path.join(HERE, "..", "..")
 CHARTS = os.path.join(ROOT, "regression", "charts")
 sys.path[:0] = [CHARTS, os.path.join(ROOT, "regression", "scenes")]
 import squeal_placement as placement  # noqa: E402
+from make_squeal_decks import LATERAL_CREEPAGE as NOMINAL_LATERAL_CREEPAGE  # noqa: E402
 import patch_wave_speed  # noqa: E402
 from patch_centre_line import read_patch  # noqa: E402
 
@@ -61,7 +62,7 @@ ROLLING_RADIUS = 0.46038  # m, the decks' r0 (omega = V / r0)
 AXLE_CENTRE = (0.7, 0.0, 0.459916265)  # m, the wheel part's Translation in the full decks
 CENTRE_LINE_TIMES = [0.0181 + 0.0001 * k for k in range(8)]
 WAVE_TIMES = [0.01855 + 2.5e-7 * k for k in range(32)]  # the decks' burst of patch files
-NOMINAL_LATERAL_CREEPAGE = {1: 0.0, 2: 5e-4, 3: 2e-3, 4: 4.5e-3, 5: 2e-3}
+
 
 
 def run(command):
