@@ -32,6 +32,7 @@ A few minutes (the exact solver twice per case, the spectra); the runs themselve
 """
 import argparse
 import csv
+import functools
 import glob
 import math
 import os
@@ -73,22 +74,36 @@ def run(command):
     return done.stdout
 
 
-def patch_at(results, time):
-    """The patch file of `results` whose instant is nearest `time` (s), and that instant."""
-    best = None
+@functools.lru_cache(maxsize=None)
+def patch_instants(results):
+    """(instant, path) of every patch file of `results`, each file's first row read once."""
+    instants = []
     for path in glob.glob(os.path.join(results, f"{PAIR}_patch_*.csv")):
         with open(path) as f:
             row = next(csv.DictReader(f), None)
-        if row is not None and (best is None or abs(float(row["time_s"]) - time) < best[1]):
-            best = (path, abs(float(row["time_s"]) - time), float(row["time_s"]))
-    if best is None or best[1] > 1e-6:
+        if row is not None:
+            instants.append((float(row["time_s"]), path))
+    return instants
+
+
+def patch_at(results, time):
+    """The patch file of `results` whose instant is within 1 us of `time` (s), and that
+    instant; (None, None) if there is none."""
+    best = min(patch_instants(results), key=lambda item: abs(item[0] - time), default=None)
+    if best is None or abs(best[0] - time) > 1e-6:
         return None, None
-    return best[0], best[2]
+    return best[1], best[0]
+
+
+@functools.lru_cache(maxsize=None)
+def histories(results):
+    """The run's roll_histories.csv, read once."""
+    return np.genfromtxt(os.path.join(results, "roll_histories.csv"), delimiter=",", names=True)
 
 
 def history_value(results, column, time):
     """A column of roll_histories.csv at the row nearest `time`."""
-    rows = np.genfromtxt(os.path.join(results, "roll_histories.csv"), delimiter=",", names=True)
+    rows = histories(results)
     return float(rows[column][np.argmin(np.abs(rows["time_s"] - time))])
 
 
