@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "framework/base/error.hpp"
 #include "framework/output/csv_writer.hpp"
 #include "framework/output/output_directory.hpp"
 #include "framework/output/run_summary.hpp"
@@ -11,6 +12,30 @@
 #include "physics/explicit/explicit_solver.hpp"
 
 namespace railfe {
+
+namespace {
+
+/// Appends \p rows' numbers to \p values, row after row.
+void append_numbers(std::vector<double>& values, const std::vector<std::vector<double>>& rows) {
+  for (const auto& row : rows)
+    values.insert(values.end(), row.begin(), row.end());
+}
+
+/// Reads \p count numbers from \p values at \p k (advanced past them) as rows of \p width.
+std::vector<std::vector<double>> read_rows(const std::vector<double>& values, std::size_t& k,
+                                           std::size_t count, std::size_t width) {
+  if (count % width != 0 || k + count > values.size())
+    throw RunError(
+        "the checkpoint's contact output does not fit this deck's contact pairs (was it "
+        "written by a run of another deck?)");
+  std::vector<std::vector<double>> rows;
+  for (const std::size_t end = k + count; k < end; k += width)
+    rows.emplace_back(values.begin() + static_cast<std::ptrdiff_t>(k),
+                      values.begin() + static_cast<std::ptrdiff_t>(k + width));
+  return rows;
+}
+
+}  // namespace
 
 ContactRecorder::ContactRecorder(const ExplicitSettings& settings, const ExplicitSolver& solver,
                                  OutputDirectory& output, const std::string& step_name, bool root)
@@ -77,18 +102,20 @@ std::string ContactRecorder::patch_name(std::size_t p, std::size_t index,
 
 void ContactRecorder::write_patch(std::size_t p, std::size_t index) {
   const ContactPairs& contact = solver_.contact();
-  CsvWriter patch(output_.staging_path(patch_name(p, index, ".csv")), contact_patch_columns(),
-                  root_);
-  const auto rows = contact_patch_rows(solver_.time(), contact.pairs()[p], contact);
-  std::vector<double> flat;
-  for (const auto& row : rows) {
-    patch.write_row(row);
-    flat.insert(flat.end(), row.begin(), row.end());
-  }
+  auto rows = contact_patch_rows(solver_.time(), contact.pairs()[p], contact);
+  write_patch_file(p, index, rows);
   if (root_) {
     patch_rows_[p].resize(index + 1);
-    patch_rows_[p][index] = std::move(flat);
+    patch_rows_[p][index] = std::move(rows);
   }
+}
+
+void ContactRecorder::write_patch_file(std::size_t p, std::size_t index,
+                                       const std::vector<std::vector<double>>& rows) const {
+  CsvWriter file(output_.staging_path(patch_name(p, index, ".csv")), contact_patch_columns(),
+                 root_);
+  for (const auto& row : rows)
+    file.write_row(row);
 }
 
 std::vector<std::array<std::string, 2>> ContactRecorder::patch_charts() const {
@@ -144,15 +171,15 @@ std::vector<double> ContactRecorder::state() const {
   for (std::size_t p = 0; p < rows_.size(); ++p) {
     values.push_back(static_cast<double>(next_patch_[p]));
     values.push_back(static_cast<double>(rows_[p].size()));
-    for (const auto& row : rows_[p])
-      values.insert(values.end(), row.begin(), row.end());
+    append_numbers(values, rows_[p]);
   }
   // The patch files, as a count of files, then each file's count of numbers and its numbers.
+  const std::size_t width = contact_patch_columns().size();
   for (const auto& patches : patch_rows_) {
     values.push_back(static_cast<double>(patches.size()));
     for (const auto& patch : patches) {
-      values.push_back(static_cast<double>(patch.size()));
-      values.insert(values.end(), patch.begin(), patch.end());
+      values.push_back(static_cast<double>(patch.size() * width));
+      append_numbers(values, patch);
     }
   }
   return values;
@@ -164,12 +191,7 @@ void ContactRecorder::restore(const std::vector<double>& values) {
   for (std::size_t p = 0; p < rows_.size(); ++p) {
     next_patch_[p] = static_cast<std::size_t>(values.at(k++));
     const auto count = static_cast<std::size_t>(values.at(k++));
-    rows_[p].clear();
-    for (std::size_t r = 0; r < count; ++r) {
-      rows_[p].emplace_back(values.begin() + static_cast<std::ptrdiff_t>(k),
-                            values.begin() + static_cast<std::ptrdiff_t>(k + width));
-      k += width;
-    }
+    rows_[p] = read_rows(values, k, count * width, width);
     for (const auto& row : rows_[p])
       histories_[p]->write_row(row);
   }
@@ -177,17 +199,9 @@ void ContactRecorder::restore(const std::vector<double>& values) {
   for (std::size_t p = 0; p < patch_rows_.size(); ++p) {
     patch_rows_[p].resize(static_cast<std::size_t>(values.at(k++)));
     for (std::size_t index = 0; index < patch_rows_[p].size(); ++index) {
-      const auto size = static_cast<std::size_t>(values.at(k++));
-      auto& patch = patch_rows_[p][index];
-      patch.assign(values.begin() + static_cast<std::ptrdiff_t>(k),
-                   values.begin() + static_cast<std::ptrdiff_t>(k + size));
-      k += size;
-      CsvWriter file(output_.staging_path(patch_name(p, index, ".csv")), contact_patch_columns(),
-                     root_);
-      for (std::size_t r = 0; r + patch_width <= patch.size(); r += patch_width)
-        file.write_row(
-            std::vector<double>(patch.begin() + static_cast<std::ptrdiff_t>(r),
-                                patch.begin() + static_cast<std::ptrdiff_t>(r + patch_width)));
+      const auto count = static_cast<std::size_t>(values.at(k++));
+      patch_rows_[p][index] = read_rows(values, k, count, patch_width);
+      write_patch_file(p, index, patch_rows_[p][index]);
     }
   }
 }

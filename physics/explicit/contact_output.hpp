@@ -54,6 +54,8 @@ class ContactRecorder {
 
  private:
   void write_patch(std::size_t pair, std::size_t index);
+  void write_patch_file(std::size_t pair, std::size_t index,
+                        const std::vector<std::vector<double>>& rows) const;
   std::string patch_name(std::size_t pair, std::size_t index, const char* extension) const;
 
   const ExplicitSettings& settings_;
@@ -64,8 +66,9 @@ class ContactRecorder {
   std::vector<std::unique_ptr<CsvWriter>> histories_;
   std::vector<std::vector<std::vector<double>>> rows_;  // per pair
   std::vector<std::size_t> next_patch_;                 // per pair: index of the next patch time
-  std::vector<std::vector<std::vector<double>>> patch_rows_;  // per pair and patch (root)
-  std::vector<PenaltyFlexibility> flexibility_;               // per pair
+  // Per pair and patch file, its rows (root).
+  std::vector<std::vector<std::vector<std::vector<double>>>> patch_rows_;
+  std::vector<PenaltyFlexibility> flexibility_;  // per pair
   long long last_step_ = -1;
 };
 

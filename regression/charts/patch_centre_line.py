@@ -9,7 +9,10 @@ the force-weighted centre) along the rolling direction s1. Slipping nodes are ma
         [--csv out.csv] roll_contact_wheel-rail_patch_1.csv roll_contact_wheel-rail_patch_2.csv ...
 
 Without --mu the friction coefficient is the median |q| / p of the slipping nodes (said in the
-title). --csv writes the centre-line values of every panel.
+title). For falling friction (the squeal scene's case 5), --falling MU_S MU_D DECAY gives each
+node its own bound mu(v) p, mu(v) = MU_D + (MU_S - MU_D) exp(-DECAY |v|) at the node's slip speed
+|v| in the file, the law the explicit contact applies. --csv writes the centre-line values of
+every panel.
 """
 import argparse
 import csv
@@ -65,10 +68,12 @@ def estimated_friction(patches):
 
 
 def panel(ax, patch, mu):
-    """Draws one instant's centre line on \\p ax; returns its rows for the CSV."""
+    """Draws one instant's centre line on \\p ax; returns its rows for the CSV. \\p mu maps the
+    nodes' slip speeds (m/s) to their friction coefficients."""
     line = centre_line(patch)
     s1 = 1e3 * patch["s1_m"][line]
-    bound = 1e-6 * mu * patch["pressure_Pa"][line]
+    speed = np.hypot(patch["slip_velocity_1_m/s"][line], patch["slip_velocity_2_m/s"][line])
+    bound = 1e-6 * mu(speed) * patch["pressure_Pa"][line]
     q1 = 1e-6 * patch["shear_1_Pa"][line]
     q2 = 1e-6 * patch["shear_2_Pa"][line]
     slip = patch["slipping"][line] > 0.5
@@ -89,21 +94,35 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("patches", nargs="+", help="patch CSV files, in time order")
     parser.add_argument("--mu", type=float, help="friction coefficient of the bound mu p")
+    parser.add_argument("--falling", type=float, nargs=3, metavar=("MU_S", "MU_D", "DECAY"),
+                        help="velocity-dependent friction: static and dynamic coefficients and "
+                             "the decay (s/m)")
     parser.add_argument("--png", required=True)
     parser.add_argument("--csv", help="write the centre-line values here")
     args = parser.parse_args()
+    if args.mu is not None and args.falling:
+        parser.error("--mu and --falling: give one friction law")
     patches = [read_patch(path) for path in args.patches]
-    mu = args.mu if args.mu is not None else estimated_friction(patches)
-    if mu is None:
-        raise SystemExit("no slipping node to estimate mu from: give --mu")
-    source = "given" if args.mu is not None else "estimated from the slipping nodes"
+    if args.falling:
+        mu_s, mu_d, decay = args.falling
+        if not (0 < mu_d <= mu_s and decay >= 0):
+            parser.error("--falling MU_S MU_D DECAY: need 0 < MU_D <= MU_S and DECAY >= 0")
+        law = lambda v: mu_d + (mu_s - mu_d) * np.exp(-decay * v)  # noqa: E731
+        title = f"μ = {mu_d:g} + {mu_s - mu_d:g} exp(−{decay:g} s/m |v|), each node's slip speed"
+    else:
+        mu = args.mu if args.mu is not None else estimated_friction(patches)
+        if mu is None:
+            raise SystemExit("no slipping node to estimate mu from: give --mu")
+        source = "given" if args.mu is not None else "estimated from the slipping nodes"
+        law = lambda v: np.full_like(v, mu)  # noqa: E731
+        title = f"μ = {mu:.3g}, {source}"
     columns = min(4, len(patches))
     rows = math.ceil(len(patches) / columns)
     fig, axes = plt.subplots(rows, columns, figsize=(4 * columns, 3.2 * rows), sharex=True,
                              sharey=True, squeeze=False)
     table = []
     for ax, patch in zip(axes.flat, patches):
-        table += panel(ax, patch, mu)
+        table += panel(ax, patch, law)
     for ax in axes.flat[len(patches):]:
         ax.set_visible(False)
     for ax in axes[-1]:
@@ -111,8 +130,7 @@ def main():
     for ax in axes[:, 0]:
         ax.set_ylabel("shear traction (MPa)")
     axes.flat[0].legend(fontsize=7, loc="lower left")
-    fig.suptitle(f"Shear traction and bound μp along the patch centre line (μ = {mu:.3g}, "
-                 f"{source})")
+    fig.suptitle(f"Shear traction and bound μp along the patch centre line ({title})")
     fig.tight_layout()
     fig.savefig(args.png, dpi=110)
     if args.csv:

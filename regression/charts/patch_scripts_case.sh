@@ -11,6 +11,9 @@ rm -rf "$out" && mkdir -p "$out"
 "$python" "$here/patch_centre_line.py" --mu 0.45 --png "$out/centre_line.png" \
   --csv "$out/centre_line.csv" "$samples/squeal_probe_lateral_patch_4.csv" \
   "$samples/squeal_probe_lateral_patch_8.csv"
+# Falling friction: each node's own bound mu(v) p from its slip speed (case 5's law).
+"$python" "$here/patch_centre_line.py" --falling 0.5 0.32 6 --png "$out/centre_line_falling.png" \
+  --csv "$out/centre_line_falling.csv" "$samples/squeal_probe_lateral_patch_8.csv"
 "$python" "$here/patch_vs_exact.py" --railfe "$railfe" --mu 0.45 --table "$out/table3.csv" \
   --png "$out/patch_vs_exact.png" --work "$out/work" "$samples/squeal_probe_lateral_patch_8.csv"
 # The same patch on the profiles' separation (no ellipse): the creepages found must carry the
@@ -25,11 +28,21 @@ test -s "$out/centre_line.png" && test -s "$out/patch_vs_exact.png" \
 # Three nodes on the centre line at each instant; FN, Fx, Fy summed from pressure, shear and
 # area (the run's own history reads 104.75 kN, -1.56 kN, -4.85 kN 1.3 us later); the creepages
 # found carry them (checked inside patch_vs_exact.py); values from the scripts' first run.
-"$python" - "$out" <<'PY'
+"$python" - "$out" "$samples" <<'PY'
 import csv, math, sys
-out = sys.argv[1]
+out, samples = sys.argv[1:3]
 line = list(csv.DictReader(open(f"{out}/centre_line.csv")))
 assert len(line) == 6, f"{len(line)} centre-line rows, expected 6"
+# Falling friction: each centre-line node's bound is mu(|v|) p of its own row in the sample.
+nodes = {round(1e3 * float(r["s1_m"]), 6): r
+         for r in csv.DictReader(open(f"{samples}/squeal_probe_lateral_patch_8.csv"))}
+falling = list(csv.DictReader(open(f"{out}/centre_line_falling.csv")))
+assert len(falling) == 3, f"{len(falling)} falling centre-line rows, expected 3"
+for r in falling:
+    node = nodes[round(float(r["s1_mm"]), 6)]
+    v = math.hypot(float(node["slip_velocity_1_m/s"]), float(node["slip_velocity_2_m/s"]))
+    bound = (0.32 + 0.18 * math.exp(-6 * v)) * float(node["pressure_Pa"]) / 1e6
+    assert math.isclose(float(r["mu_p_MPa"]), bound, rel_tol=1e-12), (r, bound)
 rows = list(csv.DictReader(open(f"{out}/table3.csv")))
 row, profiles = rows[0], rows[1]
 # The profiles' patch is wider across than the probe's ellipse (the conformal S1002 on 54E1).
