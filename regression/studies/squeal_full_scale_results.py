@@ -21,6 +21,8 @@ For each case given (--case K DIR):
   and the peaks matched to the modes of the run's own modal step (regression/charts/
   rim_vibration.py): docs/data/squeal_full_rim_peaks.csv (a case column added), the PSD and
   wavelet charts to docs/img/squeal_full_rim_{psd,wavelet}_case<K>.png;
+- case 5 beside case 3 (slipping nodes, forces and bound), docs/img/
+  squeal_full_case5_vs_case3.png, when both are given;
 - a summary row (window means over --window of the forces and the patch, the axle box's lateral
   displacement at --time) to docs/data/squeal_full_cases.csv.
 
@@ -52,6 +54,7 @@ CHARTS = os.path.join(ROOT, "regression", "charts")
 sys.path[:0] = [CHARTS, os.path.join(ROOT, "regression", "scenes")]
 import squeal_placement as placement  # noqa: E402
 from make_squeal_decks import LATERAL_CREEPAGE as NOMINAL_LATERAL_CREEPAGE  # noqa: E402
+from make_squeal_decks import FALLING_FRICTION  # noqa: E402
 import patch_wave_speed  # noqa: E402
 from patch_centre_line import read_patch  # noqa: E402
 
@@ -116,10 +119,16 @@ def contact_angle(patch):
 
 
 def table3_rows(case, results, time, railfe, work):
-    """The case's two Table-3 rows (profiles, ellipse), and its chart to docs/img."""
+    """The case's two Table-3 rows (profiles, ellipse), and its chart to docs/img. Case 5 has
+    none: its falling friction has no counterpart in the exact steady solver's Coulomb law, so its
+    chart is the run's own patch map at that instant (the seed's Fig. 7)."""
     path, instant = patch_at(results, time)
     if path is None:
         raise SystemExit(f"{results}: no patch file at t = {time} s")
+    if case == 5:
+        shutil.copy(os.path.splitext(path)[0] + ".png",
+                    os.path.join(IMG, f"squeal_full_patch_case{case}.png"))
+        return []
     patch = read_patch(path)
     angle = contact_angle(patch)
     shift = history_value(results, "axle_y_displacement_y_m", instant)
@@ -178,8 +187,10 @@ def forces_chart(histories, png):
         t = 1e3 * h["time_s"]
         for ax, name in zip(axes, ("normal_force_N", "tangential_1_N", "tangential_2_N")):
             ax.plot(t, 1e-3 * h[name], linewidth=0.7, label=f"case {case}")
-    axes[1].plot(t, 1e-3 * h["friction_bound_N"], color="red", linestyle="--", linewidth=0.7,
-                 label="traction bound mu N (last case)")
+    first = min(histories)
+    axes[1].plot(1e3 * histories[first]["time_s"], 1e-3 * histories[first]["friction_bound_N"],
+                 color="red", linestyle="--", linewidth=0.7,
+                 label=f"traction bound mu N (case {first})")
     for ax, label in zip(axes, ("normal force (kN)", "longitudinal force (kN)",
                                 "lateral force (kN)")):
         ax.set_ylabel(label)
@@ -187,7 +198,36 @@ def forces_chart(histories, png):
         ax.legend(loc="best", fontsize=8)
     axes[-1].set_xlabel("time (ms)")
     fig.suptitle("Squeal scene at full scale: contact forces on the wheel (lateral axle motion "
-                 "from 16 ms in cases 2-4)")
+                 "from 16 ms in cases 2-5)")
+    fig.tight_layout()
+    fig.savefig(png, dpi=110)
+    plt.close(fig)
+
+
+def falling_against_coulomb(histories, png):
+    """Case 5 beside case 3 from 15.5 ms (the same lateral motion, falling friction against
+    Coulomb): slipping nodes, longitudinal force with its bound mu N, lateral force."""
+    fig, axes = plt.subplots(3, 1, figsize=(10, 8), sharex=True)
+    for case, colour in ((3, "tab:blue"), (5, "tab:red")):
+        h = histories[case]
+        late = h["time_s"] >= 0.0155
+        t = 1e3 * h["time_s"][late]
+        axes[0].plot(t, h["slipping_nodes"][late], color=colour, lw=0.6, label=f"case {case}")
+        axes[1].plot(t, h["tangential_1_N"][late] / 1e3, color=colour, lw=0.6,
+                     label=f"case {case}: Fx")
+        axes[1].plot(t, h["friction_bound_N"][late] / 1e3, "--", color=colour, lw=0.6,
+                     label=f"case {case}: bound μN")
+        axes[2].plot(t, h["tangential_2_N"][late] / 1e3, color=colour, lw=0.6,
+                     label=f"case {case}")
+    axes[0].set_ylabel("slipping nodes")
+    axes[1].set_ylabel("longitudinal force (kN)")
+    axes[2].set_ylabel("lateral force (kN)")
+    axes[2].set_xlabel("time (ms)")
+    for ax in axes:
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8, ncol=2)
+    fig.suptitle("Case 5 (falling friction from 15.74 ms) against case 3 (Coulomb 0.45), "
+                 "full scale")
     fig.tight_layout()
     fig.savefig(png, dpi=110)
     plt.close(fig)
@@ -199,7 +239,8 @@ def centre_line(case, results):
     if any(p is None for p in paths):
         print(f"case {case}: no patch files at 18.1-18.8 ms (an older deck); no centre line")
         return
-    run([sys.executable, os.path.join(CHARTS, "patch_centre_line.py"), "--mu", str(MU),
+    law = ["--falling", *map(str, FALLING_FRICTION)] if case == 5 else ["--mu", str(MU)]
+    run([sys.executable, os.path.join(CHARTS, "patch_centre_line.py"), *law,
          "--png", os.path.join(IMG, f"squeal_full_centre_line_case{case}.png"),
          "--csv", os.path.join(DATA, f"squeal_full_centre_line_case{case}.csv")] + paths)
 
@@ -275,6 +316,8 @@ def main():
         waves += wave_speed(case, results,
                             os.path.join(IMG, f"squeal_full_patch_waves_case{case}.png"))
     forces_chart(histories, os.path.join(IMG, "squeal_full_forces.png"))
+    if 3 in histories and 5 in histories:
+        falling_against_coulomb(histories, os.path.join(IMG, "squeal_full_case5_vs_case3.png"))
     write(os.path.join(DATA, "squeal_full_table3.csv"), table3)
     write(os.path.join(DATA, "squeal_full_cases.csv"), summaries)
     write(os.path.join(DATA, "squeal_full_rim_peaks.csv"), peaks)
