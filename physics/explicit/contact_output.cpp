@@ -110,8 +110,7 @@ void ContactRecorder::write_patch(std::size_t p, std::size_t index) {
   }
 }
 
-void ContactRecorder::write_patch_file(std::size_t p, std::size_t index,
-                                       const std::vector<std::vector<double>>& rows) const {
+void ContactRecorder::write_patch_file(std::size_t p, std::size_t index, const Rows& rows) const {
   CsvWriter file(output_.staging_path(patch_name(p, index, ".csv")), contact_patch_columns(),
                  root_);
   for (const auto& row : rows)

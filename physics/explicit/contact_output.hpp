@@ -53,9 +53,11 @@ class ContactRecorder {
   void restore(const std::vector<double>& values);
 
  private:
+  /// Rows of a CSV file's numbers.
+  using Rows = std::vector<std::vector<double>>;
+
   void write_patch(std::size_t pair, std::size_t index);
-  void write_patch_file(std::size_t pair, std::size_t index,
-                        const std::vector<std::vector<double>>& rows) const;
+  void write_patch_file(std::size_t pair, std::size_t index, const Rows& rows) const;
   std::string patch_name(std::size_t pair, std::size_t index, const char* extension) const;
 
   const ExplicitSettings& settings_;
@@ -64,10 +66,9 @@ class ContactRecorder {
   std::string step_name_;
   bool root_;
   std::vector<std::unique_ptr<CsvWriter>> histories_;
-  std::vector<std::vector<std::vector<double>>> rows_;  // per pair
-  std::vector<std::size_t> next_patch_;                 // per pair: index of the next patch time
-  // Per pair and patch file, its rows (root).
-  std::vector<std::vector<std::vector<std::vector<double>>>> patch_rows_;
+  std::vector<Rows> rows_;                       // per pair
+  std::vector<std::size_t> next_patch_;          // per pair: index of the next patch time
+  std::vector<std::vector<Rows>> patch_rows_;    // per pair and patch file (root)
   std::vector<PenaltyFlexibility> flexibility_;  // per pair
   long long last_step_ = -1;
 };

@@ -109,19 +109,26 @@ DEMO = {
     "contact_mass_scaling": 3.4e-7,
 }
 
-# Case 5's falling friction (the seed's): static and dynamic coefficients and the decay (s/m).
+# Cases 1-4's Coulomb friction and case 5's falling friction (the seed's): static and dynamic
+# coefficients and the decay (s/m).
+COULOMB_FRICTION = 0.45
 FALLING_FRICTION = (0.5, 0.32, 6.0)
 
 
+def falling_friction(case):
+    """(mu_s, mu_d, decay) if \p case has falling friction, None if Coulomb."""
+    return FALLING_FRICTION if case == 5 else None
+
+
 def friction(case):
-    if case == 5:
-        mu_s, mu_d, decay = FALLING_FRICTION
+    if falling_friction(case):
+        mu_s, mu_d, decay = falling_friction(case)
         return ('<Parameter name="Friction" type="string" value="velocity dependent"/>\n'
                 f'<Parameter name="Static coefficient" type="double" value="{mu_s:g}"/>\n'
                 f'<Parameter name="Dynamic coefficient" type="double" value="{mu_d:g}"/>\n'
                 f'<Parameter name="Decay" type="double" value="{decay:g}"/>')
     return ('<Parameter name="Friction" type="string" value="coulomb"/>\n'
-            '<Parameter name="Friction coefficient" type="double" value="0.45"/>')
+            f'<Parameter name="Friction coefficient" type="double" value="{COULOMB_FRICTION:g}"/>')
 
 
 def lateral_motion(case, p):

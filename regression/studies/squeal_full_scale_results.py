@@ -54,19 +54,18 @@ CHARTS = os.path.join(ROOT, "regression", "charts")
 sys.path[:0] = [CHARTS, os.path.join(ROOT, "regression", "scenes")]
 import squeal_placement as placement  # noqa: E402
 from make_squeal_decks import LATERAL_CREEPAGE as NOMINAL_LATERAL_CREEPAGE  # noqa: E402
-from make_squeal_decks import FALLING_FRICTION  # noqa: E402
+from make_squeal_decks import COULOMB_FRICTION as MU, falling_friction  # noqa: E402
 import patch_wave_speed  # noqa: E402
 from patch_centre_line import read_patch  # noqa: E402
 
 DATA = os.path.join(ROOT, "docs", "data")
 IMG = os.path.join(ROOT, "docs", "img")
 PAIR = "roll_contact_wheel-rail"
-MU, SPEED = 0.45, 100 / 3.6
+SPEED = 100 / 3.6
 ROLLING_RADIUS = 0.46038  # m, the decks' r0 (omega = V / r0)
 AXLE_CENTRE = (0.7, 0.0, 0.459916265)  # m, the wheel part's Translation in the full decks
 CENTRE_LINE_TIMES = [0.0181 + 0.0001 * k for k in range(8)]
 WAVE_TIMES = [0.01855 + 2.5e-7 * k for k in range(32)]  # the decks' burst of patch files
-
 
 
 def run(command):
@@ -99,14 +98,14 @@ def patch_at(results, time):
 
 
 @functools.lru_cache(maxsize=None)
-def histories(results):
+def roll_histories(results):
     """The run's roll_histories.csv, read once."""
     return np.genfromtxt(os.path.join(results, "roll_histories.csv"), delimiter=",", names=True)
 
 
 def history_value(results, column, time):
     """A column of roll_histories.csv at the row nearest `time`."""
-    rows = histories(results)
+    rows = roll_histories(results)
     return float(rows[column][np.argmin(np.abs(rows["time_s"] - time))])
 
 
@@ -120,12 +119,12 @@ def contact_angle(patch):
 
 def table3_rows(case, results, time, railfe, work):
     """The case's two Table-3 rows (profiles, ellipse), and its chart to docs/img. Case 5 has
-    none: its falling friction has no counterpart in the exact steady solver's Coulomb law, so its
+    none: falling friction has no counterpart in the exact steady solver's Coulomb law, so its
     chart is the run's own patch map at that instant (the seed's Fig. 7)."""
     path, instant = patch_at(results, time)
     if path is None:
         raise SystemExit(f"{results}: no patch file at t = {time} s")
-    if case == 5:
+    if falling_friction(case):
         shutil.copy(os.path.splitext(path)[0] + ".png",
                     os.path.join(IMG, f"squeal_full_patch_case{case}.png"))
         return []
@@ -239,7 +238,8 @@ def centre_line(case, results):
     if any(p is None for p in paths):
         print(f"case {case}: no patch files at 18.1-18.8 ms (an older deck); no centre line")
         return
-    law = ["--falling", *map(str, FALLING_FRICTION)] if case == 5 else ["--mu", str(MU)]
+    falling = falling_friction(case)
+    law = ["--falling", *map(str, falling)] if falling else ["--mu", str(MU)]
     run([sys.executable, os.path.join(CHARTS, "patch_centre_line.py"), *law,
          "--png", os.path.join(IMG, f"squeal_full_centre_line_case{case}.png"),
          "--csv", os.path.join(DATA, f"squeal_full_centre_line_case{case}.csv")] + paths)
