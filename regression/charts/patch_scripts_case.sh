@@ -14,6 +14,15 @@ rm -rf "$out" && mkdir -p "$out"
 # Falling friction: each node's own bound mu(v) p from its slip speed (case 5's law).
 "$python" "$here/patch_centre_line.py" --falling 0.5 0.32 6 --png "$out/centre_line_falling.png" \
   --csv "$out/centre_line_falling.csv" "$samples/squeal_probe_lateral_patch_8.csv"
+# Two friction laws at once, or a falling law that rises with speed, are refused by name.
+for bad in "--mu 0.45 --falling 0.5 0.32 6" "--falling 0.3 0.32 6"; do
+  # shellcheck disable=SC2086
+  if "$python" "$here/patch_centre_line.py" $bad --png "$out/bad.png" \
+      "$samples/squeal_probe_lateral_patch_8.csv" 2> "$out/bad.txt"; then
+    echo "patch_centre_line.py accepted $bad"; exit 1
+  fi
+  grep -q -- "--falling" "$out/bad.txt" || { cat "$out/bad.txt"; exit 1; }
+done
 "$python" "$here/patch_vs_exact.py" --railfe "$railfe" --mu 0.45 --table "$out/table3.csv" \
   --png "$out/patch_vs_exact.png" --work "$out/work" "$samples/squeal_probe_lateral_patch_8.csv"
 # The same patch on the profiles' separation (no ellipse): the creepages found must carry the
