@@ -36,6 +36,7 @@ one core of the shared machine (0.42 us per element-step):
         [--sizes 3] [--end-time 0.004] [--window 0.003 0.004] [--reuse] [--replot]
 """
 import json
+from concurrent.futures import ThreadPoolExecutor
 import math
 import os
 import sys
@@ -62,6 +63,7 @@ PNG = os.path.join(ROOT, "docs", "img", "squeal_steady_creepage.png")
 HOLD = None  # --hold XI: the held runs (make_squeal_decks.py --hold-creepage), their own files
 PENALTY = 1.0  # the held run's Penalty factor (squeal_steady_penalty.py); the free twin keeps 1
 SOFTER_SIDE = False  # the held run's Penalty stiffness "bulk modulus, softer side"
+FREE_LIKE_HELD = False  # the free twin at the held run's penalty settings instead of f = 1
 
 
 def held(path):
@@ -78,26 +80,37 @@ def held_name(size):
 
 def run_pair(railfe, work, size, timeline, reuse):
     """The driven run and its free twin: by the torque (the scene's model), or with --hold, both
-    held (hub, web and axle at the rolling speed, spun at 1 + XI and 1 x free rolling)."""
+    held (hub, web and axle at the rolling speed, spun at 1 + XI and 1 x free rolling). The held
+    pair runs side by side, a core each."""
     if HOLD is None:
         return (convergence.one_run(railfe, work, size, True, timeline.variant(), reuse),
                 convergence.one_run(railfe, work, size, False, timeline.variant(), reuse))
-    runs = []
-    for name, xi, penalty, softer in ((held_name(size), HOLD, PENALTY, SOFTER_SIDE),
-                                      (f"held_{size:g}mm_free", 0.0, 1.0, False)):
-        text = convergence.deck_text(
+    twin = (PENALTY, SOFTER_SIDE) if FREE_LIKE_HELD else (1.0, False)
+    decks = []
+    for name, xi, (penalty, softer) in ((held_name(size), HOLD, (PENALTY, SOFTER_SIDE)),
+                                        (free_name(size), 0.0, twin)):
+        decks.append((name, convergence.deck_text(
             convergence.options(size) + ["--case", "1", "--kinematics", "--torque", "0",
                                          "--hold-creepage", repr(xi)] + timeline.variant() +
             ([] if penalty == 1 else ["--penalty", f"{penalty:g}"]) +
-            (["--penalty-stiffness", "bulk modulus, softer side"] if softer else []))
+            (["--penalty-stiffness", "bulk modulus, softer side"] if softer else []))))
+
+    def one(name, text):
         results = os.path.join(work, name + "_results")
         if (reuse and os.path.exists(os.path.join(results, "summary.json"))
                 and open(os.path.join(work, name + ".xml")).read() == text):
             with open(os.path.join(results, "summary.json")) as summary:
-                runs.append((results, json.load(summary)))
-        else:
-            runs.append(run_deck(railfe, text, work, name))
-    return runs
+                return results, json.load(summary)
+        return run_deck(railfe, text, work, name)
+    with ThreadPoolExecutor(max_workers=2) as pool:
+        return list(pool.map(lambda deck: one(*deck), decks))
+
+
+def free_name(size):
+    """The free twin's name: at f = 1 on the plain bulk modulus, or (FREE_LIKE_HELD) with the
+    held run's penalty settings in its name."""
+    return (f"held_{size:g}mm_free" +
+            (held_name(size)[len(f"held_{size:g}mm"):] if FREE_LIKE_HELD else ""))
 
 
 class Timeline:

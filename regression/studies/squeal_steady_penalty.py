@@ -33,6 +33,9 @@ machine that was running two of them at once:
 Another mesh or window is another run set, with its own files (--name): the 2 mm mesh, softer
 side at f = 10, held to 4 ms with the window 3-4 ms, as
     ... --penalties --softer 10 --size 2 --end-time 4e-3 --window 3e-3 4e-3 --name 2mm_4ms
+and the same with its free twin at the held run's penalty settings (--free-like-held: the free
+twin's own r is then railfe's report, not an estimate scaled from 3 mm):
+    ... --name 2mm_4ms_matched --free-like-held
 """
 import json
 import math
@@ -95,6 +98,8 @@ def one_factor(railfe, work, size, penalty, softer, timeline, reuse):
     a, b = row["patch_a_m"], row["patch_b_m"]
     name = steady.held_name(size)
     row["flexibility_ratio_railfe"] = summary_ratio(work, name)
+    row["free_like_held"] = float(steady.FREE_LIKE_HELD)
+    row["free_flexibility_ratio_railfe"] = summary_ratio(work, steady.free_name(size))
     row["patch_flexibility_m_per_Pa"] = 8 * a * a * b / (3 * row["exact_initial_slope_N"])
     if softer:  # the caps are railfe's to know: its own ratio, on the same patch
         row["penalty_flexibility_m_per_Pa"] = (row["flexibility_ratio_railfe"] *
@@ -225,11 +230,14 @@ def main():
     parser.add_argument("--name", default="",
                         help="a run set other than the 3 mm one: its files get _NAME (e.g. "
                              "2mm_4ms: squeal_steady_penalty_2mm_4ms.csv)")
+    parser.add_argument("--free-like-held", action="store_true",
+                        help="run each free twin at its held run's penalty settings instead of "
+                             "at f = 1 on the plain bulk modulus")
     args = parser.parse_args()
     global CSV, HISTORIES, PNG
     CSV, HISTORIES, PNG = outputs(args.name)
     if not args.replot:
-        steady.HOLD = HOLD
+        steady.HOLD, steady.FREE_LIKE_HELD = HOLD, args.free_like_held
         timeline = steady.Timeline(args.end_time, args.window)
         rows, columns = [], {}
         runs = [(f, False) for f in args.penalties] + [(f, True) for f in args.softer]
