@@ -9,22 +9,12 @@ railfe=$1 compare=$2 ranks=$3 deck=$4 output=$5
 shift 5
 rm -rf "$output"
 mkdir -p "$output"
-variant() {  # variant NAME CHECKPOINT_XML
-  sed "s#<Parameter name=\"Module\" type=\"string\" value=\"explicit\"/>#&$2#" "$deck" \
-    >"$output/$1.xml"
-}
+source "$(dirname "$0")/checkpoint_variants.sh"
 variant straight ""
-variant interrupted '<ParameterList name="Checkpoint"><Parameter name="Interval" type="int" value="50"/><Parameter name="Stop after steps" type="int" value="137"/></ParameterList>'
-variant resumed '<ParameterList name="Checkpoint"><Parameter name="Interval" type="int" value="50"/><Parameter name="Restart" type="bool" value="true"/></ParameterList>'
+write_checkpoint_variants
 "$@" -np "$ranks" "$railfe" "$output/straight.xml" --output "$output/straight" --quiet ||
   { echo "FAIL: the straight run failed"; exit 1; }
-"$@" -np "$ranks" "$railfe" "$output/interrupted.xml" --output "$output/resumed" --quiet \
-  >"$output/interrupted.log" 2>&1
-if ! grep -q "stopped after 137 steps" "$output/interrupted.log"; then
-  cat "$output/interrupted.log"
-  echo "FAIL: the interrupted run did not stop after 137 steps"
-  exit 1
-fi
+run_interrupted "$@"
 "$@" -np "$ranks" "$railfe" "$output/resumed.xml" --output "$output/resumed" --quiet ||
   { echo "FAIL: the resumed run failed"; exit 1; }
 grep -q "resumed from checkpoint at step *100" "$output/resumed/summary.txt" ||

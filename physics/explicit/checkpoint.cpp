@@ -11,8 +11,9 @@ namespace railfe {
 
 namespace {
 
-// The last character is the format: 2 since the contact recorder carries its patch files.
-constexpr char kMagic[8] = {'R', 'A', 'I', 'L', 'F', 'E', 'C', '2'};
+// The last character is the format: 2 since the contact recorder carries its patch files, 3
+// since the solver's state carries the stable step's calibration.
+constexpr char kMagic[8] = {'R', 'A', 'I', 'L', 'F', 'E', 'C', '3'};
 
 }  // namespace
 

@@ -19,6 +19,10 @@ namespace railfe {
 
 namespace {
 
+// time, steps, four energy accumulators, stable step, strain, hourglass and spring energy, and
+// the step calibration (checkpoint format 3).
+constexpr std::size_t kStateScalars = 11;
+
 // Lumped (row-sum) masses of the hex8 elements, 3 entries per local node (local sums only),
 // each element's density times its factor in \p density_scale (by the partition's element order).
 std::vector<double> element_masses(const MeshPartition& partition, const MaterialTable& materials,
@@ -270,7 +274,10 @@ void ExplicitSolver::initialise(const double* start) {
   NodalArrays nodes = arrays();
   discrete_->initialise_nodes(nodes);
   ghosts_->update_ghosts(u_.data(), v_.data());
-  calibrate_stable_step();
+  if (preset_calibration_ > 0)
+    step_calibration_ = preset_calibration_;
+  else
+    calibrate_stable_step();
   // The calibration used a_ as a buffer: the accelerations are set from here on (the other
   // borrowed arrays are overwritten by the first force evaluation).
   std::fill(a_.begin(), a_.end(), 0.0);
@@ -455,6 +462,10 @@ std::string ExplicitSolver::critical_location() const {
   return text.str();
 }
 
+double ExplicitSolver::checkpointed_step_calibration(const std::vector<double>& scalars) {
+  return scalars.size() == kStateScalars ? scalars[10] : 0.0;
+}
+
 SolverState ExplicitSolver::state() const {
   SolverState state;
   state.scalars = {time_,
@@ -466,7 +477,8 @@ SolverState ExplicitSolver::state() const {
                    stable_step_,
                    totals_.strain_energy,
                    totals_.hourglass_energy,
-                   spring_energy_};
+                   spring_energy_,
+                   step_calibration_};
   for (const auto* array : {&u_, &v_, &a_, &external_})
     state.arrays.insert(state.arrays.end(), array->begin(), array->end());
   state.arrays.insert(state.arrays.end(), previous_reaction_.begin(), previous_reaction_.end());
@@ -480,7 +492,7 @@ SolverState ExplicitSolver::state() const {
 
 void ExplicitSolver::restore(const SolverState& state) {
   const std::size_t expected = 3 * u_.size() + external_.size() + previous_reaction_.size();
-  if (state.scalars.size() != 10 || state.arrays.size() != expected)
+  if (state.scalars.size() != kStateScalars || state.arrays.size() != expected)
     throw RunError("the checkpoint does not fit this model and partition (" +
                    std::to_string(state.arrays.size()) + " values for " + std::to_string(expected) +
                    ")");
@@ -494,6 +506,7 @@ void ExplicitSolver::restore(const SolverState& state) {
   totals_.strain_energy = state.scalars[7];
   totals_.hourglass_energy = state.scalars[8];
   spring_energy_ = state.scalars[9];
+  step_calibration_ = state.scalars[10];
   auto it = state.arrays.begin();
   for (auto* array : {&u_, &v_, &a_, &external_}) {
     std::copy_n(it, array->size(), array->begin());

@@ -66,6 +66,12 @@ class ExplicitSolver {
   /// Sets the initial state: displacements \p start (owned, 3 per node; null = zero), initial
   /// velocities and prescribed motion; finds the initial accelerations (collective).
   void initialise(const double* start);
+  /// Before initialise(): take \p calibration as step_calibration() instead of measuring it on
+  /// the start state, so that a run resumed from a checkpoint (possibly by a deck that starts
+  /// from another state, e.g. without the preload) steps exactly as the run that wrote it.
+  void preset_step_calibration(double calibration) { preset_calibration_ = calibration; }
+  /// The step calibration a checkpoint's first section carries (0 if it carries none).
+  static double checkpointed_step_calibration(const std::vector<double>& scalars);
   /// Advances by \p dt (collective).
   void step(double dt);
   /// Global over element-by-element stable step at the start: the Lanczos estimate of the
@@ -160,7 +166,8 @@ class ExplicitSolver {
   double time_ = 0, last_step_ = 0;
   long long n_steps_ = 0;
   double stable_step_ = 0, solid_stable_step_ = 0;
-  double step_calibration_ = 1;  // global (Lanczos) limit over the element estimate at the start
+  double step_calibration_ = 1;    // global (Lanczos) limit over the element estimate at the start
+  double preset_calibration_ = 0;  // > 0: taken instead of measuring (a resumed run)
   int critical_rank_ = 0;
   LocalIndex critical_element_ = -1;
   SolidForceTotals totals_;

@@ -221,6 +221,17 @@ void ExplicitStep::run(StepContext& context) {
                      "' left no displacement to start from");
     start = preload->getData().getRawPtr();
   }
+  // A checkpoint is read before the start is set up: the solver takes the step calibration of the
+  // run that wrote it, so a deck that resumes it from another start state steps as that run did.
+  const std::string checkpoint_path = context.output.path() + "/" + context.step_name +
+                                      ".checkpoint." + std::to_string(comm.rank());
+  CheckpointSections checkpoint;
+  if (settings.restart && checkpoint_exists(checkpoint_path, comm)) {
+    checkpoint = read_checkpoint(checkpoint_path, comm.n_ranks());
+    if (checkpoint.size() != 4)
+      throw RunError("the checkpoint '" + checkpoint_path + "' has the wrong layout");
+    solver.preset_step_calibration(ExplicitSolver::checkpointed_step_calibration(checkpoint[0]));
+  }
   solver.initialise(start);
   // total_mass() is collective: every rank builds the text, the root prints it.
   const std::string mass_warning = solver.mass_scaling().added_mass > 0.01 * solver.total_mass()
@@ -258,16 +269,10 @@ void ExplicitStep::run(StepContext& context) {
   ExplicitRecorder recorder(settings, solver, dofs.partition(), context.output, context.step_name,
                             model.deck().parameters->get<std::string>("Title"),
                             model.deck().parameters->sublist("Output").get<bool>("Exodus"));
-  const std::string checkpoint_path = context.output.path() + "/" + context.step_name +
-                                      ".checkpoint." + std::to_string(comm.rank());
-  bool restarted = false;
-  if (settings.restart && checkpoint_exists(checkpoint_path, comm)) {
-    const CheckpointSections sections = read_checkpoint(checkpoint_path, comm.n_ranks());
-    if (sections.size() != 4)
-      throw RunError("the checkpoint '" + checkpoint_path + "' has the wrong layout");
-    solver.restore({sections[0], sections[1], sections[2]});
-    recorder.restore(sections[3]);
-    restarted = true;
+  const bool restarted = !checkpoint.empty();
+  if (restarted) {
+    solver.restore({checkpoint[0], checkpoint[1], checkpoint[2]});
+    recorder.restore(checkpoint[3]);
   } else {
     if (!recorder.record(true))
       throw RunError(path + ": the initial state has a non-finite energy");

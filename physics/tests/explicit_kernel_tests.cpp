@@ -444,18 +444,23 @@ TEST(Checkpoint, RoundTripAndRefusals) {
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   std::ofstream(path, std::ios::binary) << bytes.substr(0, bytes.size() - 5);
   EXPECT_THROW(read_checkpoint(path, 2), RunError);
-  // Another format (an older railfe's layout) is refused with its number, not misread.
-  write_checkpoint(path, 2, sections);
-  {
-    std::fstream file(path, std::ios::binary | std::ios::in | std::ios::out);
-    file.seekp(7);
-    file.put('1');
-  }
-  try {
-    read_checkpoint(path, 2);
-    ADD_FAILURE() << "a checkpoint of format 1 was read";
-  } catch (const RunError& error) {
-    EXPECT_NE(std::string(error.what()).find("in format 1"), std::string::npos) << error.what();
+  // Another format (an older railfe's layout: 2 lacks the step calibration) is refused with its
+  // number, not misread.
+  for (const char format : {'1', '2'}) {
+    write_checkpoint(path, 2, sections);
+    {
+      std::fstream file(path, std::ios::binary | std::ios::in | std::ios::out);
+      file.seekp(7);
+      file.put(format);
+    }
+    try {
+      read_checkpoint(path, 2);
+      ADD_FAILURE() << "a checkpoint of format " << format << " was read";
+    } catch (const RunError& error) {
+      EXPECT_NE(std::string(error.what()).find(std::string("in format ") + format),
+                std::string::npos)
+          << error.what();
+    }
   }
   std::remove(path.c_str());
 }
