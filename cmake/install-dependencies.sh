@@ -8,7 +8,7 @@ packages=(
   trilinos-all-dev libptscotch-dev libscotch-dev   # Trilinos 13.2 and what its CMake targets link
   libexodusii-dev libnetcdf-dev netcdf-bin          # Exodus II 6.02 over netCDF (ncdump for checks)
   libsuitesparse-dev libmetis-dev                   # CHOLMOD supernodal Cholesky with METIS ordering
-  libopenblas0-serial                               # optimized BLAS/LAPACK (CHOLMOD: 10x over reference BLAS)
+  libopenblas0-pthread                              # optimized, threaded BLAS/LAPACK (CHOLMOD: 10x over reference BLAS; rank 0 borrows idle cores)
   libeigen3-dev libmuparser-dev                     # small dense element math; deck expressions
   libfftw3-dev                                      # FFTs of the exact contact solver
   libopenmpi-dev openmpi-bin libgtest-dev

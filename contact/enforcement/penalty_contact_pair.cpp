@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "contact/search/bucket_search.hpp"
@@ -162,15 +163,63 @@ void PenaltyContactPair::search(const double* x, double dt, double max_speed) {
   search_->rebuild(x, settings_.search_margin + 2 * motion);
   capture_left_ = 2 * motion;
   steps_since_search_ = 0;
+  window_reach_ = motion;
+  window_slaves_.clear();
+  window_nodes_.clear();
 }
 
-void PenaltyContactPair::contact_point(int slave, const double* x) {
+void PenaltyContactPair::add_to_window(int slave, double gap) {
+  // Between searches the slave and every point of a master face move at most window_reach_
+  // each (the capture runs out first), so its distance to the surface falls by at most twice
+  // that: a slave further away cannot touch before the next search. The margin covers the
+  // round-off of the projection.
+  if (gap <= 2 * window_reach_ * (1 + 1e-6) + 1e-9)
+    window_slaves_.push_back(slave);
+}
+
+void PenaltyContactPair::close_window(const double* x) {
+  // The faces whose grown boxes the window's slaves can enter (each moves at most
+  // window_reach_) are those overlapping their bounding box grown by it: candidates() returns
+  // no other, and their nodes are all the window needs besides the slaves.
+  window_nodes_.clear();
+  if (window_slaves_.empty())
+    return;
+  const double inf = std::numeric_limits<double>::infinity();
+  std::array<double, 6> box = {inf, inf, inf, -inf, -inf, -inf};
+  for (int s : window_slaves_) {
+    const double* position = x + 3 * geometry_.slave_nodes[s];
+    window_nodes_.push_back(geometry_.slave_nodes[s]);
+    for (int d = 0; d < 3; ++d) {
+      box[d] = std::min(box[d], position[d] - window_reach_);
+      box[3 + d] = std::max(box[3 + d], position[d] + window_reach_);
+    }
+  }
+  search_->faces_overlapping(box, scratch_);
+  for (int f : scratch_)
+    window_nodes_.insert(window_nodes_.end(), geometry_.master_faces[f].begin(),
+                         geometry_.master_faces[f].end());
+  std::sort(window_nodes_.begin(), window_nodes_.end());
+  window_nodes_.erase(std::unique(window_nodes_.begin(), window_nodes_.end()), window_nodes_.end());
+}
+
+bool PenaltyContactPair::search_due(double dt, double max_speed) const {
+  return calls_ == 0 || steps_since_search_ >= settings_.search_interval ||
+         2 * max_speed * dt > capture_left_;
+}
+
+bool PenaltyContactPair::window_suffices(double dt, double max_speed) const {
+  return dt > 0 && window_valid_ && !search_due(dt, max_speed);
+}
+
+double PenaltyContactPair::contact_point(int slave, const double* x) {
   SlaveContact& contact = slaves_[slave];
   const double* position = x + 3 * geometry_.slave_nodes[slave];
   const ContactPoint found = find_contact_point(*search_, x, position, scratch_);
   contact.face = -1;
-  if (found.face < 0 || !(found.projection.gap < 0))
-    return;
+  if (found.face < 0)
+    return std::numeric_limits<double>::infinity();
+  if (!(found.projection.gap < 0))
+    return found.projection.gap;
   const auto& nodes = geometry_.master_faces[found.face];
   const std::array<const double*, 4> corners = {x + 3 * nodes[0], x + 3 * nodes[1],
                                                 x + 3 * nodes[2], x + 3 * nodes[3]};
@@ -190,7 +239,7 @@ void PenaltyContactPair::contact_point(int slave, const double* x) {
     if (crosses_free_edge(geometry_.master_faces, scratch_, found.face, corners,
                           found.projection.xi, found.projection.eta, offset,
                           1e-3 * std::abs(found.projection.gap) + 1e-12))
-      return;
+      return found.projection.gap;
   }
   contact.face = found.face;
   contact.xi = found.projection.xi;
@@ -198,22 +247,26 @@ void PenaltyContactPair::contact_point(int slave, const double* x) {
   contact.gap = found.projection.gap;
   contact.normal = found.projection.normal;
   contact.point = found.projection.point;
+  return found.projection.gap;
 }
 
 void PenaltyContactPair::locate(const double* x) {
   search(x, 0, 0);
   for (std::size_t s = 0; s < slaves_.size(); ++s)
     contact_point(static_cast<int>(s), x);
+  window_valid_ = false;  // no step: the motion until the next search is unknown
 }
 
 void PenaltyContactPair::evaluate(const double* x, const double* du, double dt, double max_speed,
                                   double* force) {
-  const double step_motion = 2 * max_speed * dt;
-  if (calls_ == 0 || steps_since_search_ >= settings_.search_interval ||
-      step_motion > capture_left_) {
+  const bool all_slaves = !window_suffices(dt, max_speed);
+  const bool searching = search_due(dt, max_speed);
+  if (searching)
     search(x, dt, max_speed);
-  }
-  capture_left_ -= step_motion;
+  // Without a step the motion since the search is not tracked (statics): the window no longer
+  // bounds it until the next search.
+  window_valid_ = searching || (window_valid_ && dt > 0);
+  capture_left_ -= 2 * max_speed * dt;
   ++steps_since_search_;
   ++calls_;
 
@@ -222,107 +275,123 @@ void PenaltyContactPair::evaluate(const double* x, const double* du, double dt, 
   totals_.dissipated = dissipated;
   totals_.frictional_work = frictional;
   Vector weighted_normal{};
-  const bool friction = settings_.friction.kind != FrictionLaw::Kind::none;
-  for (std::size_t s = 0; s < slaves_.size(); ++s) {
-    SlaveContact& contact = slaves_[s];
-    const Vector previous_tangential = contact.tangential_force;
-    contact_point(static_cast<int>(s), x);
-    if (contact.face < 0) {
-      contact = SlaveContact{};
-      continue;
+  // Ascending slaves either way, so forces add up in the same order.
+  if (all_slaves) {
+    for (std::size_t s = 0; s < slaves_.size(); ++s) {
+      const double gap = evaluate_slave(s, x, du, dt, weighted_normal, force);
+      if (searching)
+        add_to_window(static_cast<int>(s), gap);
     }
-    const int slave_node = geometry_.slave_nodes[s];
-    const auto& face = geometry_.master_faces[contact.face];
-    const std::array<double, 4> shape = quad_shape_functions(contact.xi, contact.eta);
-    const double k = stiffness(s, contact.face);
-    const Vector& n = contact.normal;
-
-    // Relative increment of the slave over the master point during the step.
-    Vector relative{};
-    for (int d = 0; d < 3; ++d) {
-      relative[d] = du[3 * slave_node + d];
-      for (int a = 0; a < 4; ++a)
-        relative[d] -= shape[a] * du[3 * face[a] + d];
-    }
-    const double approach = dot(relative, n);
-
-    double normal_force = -k * contact.gap;
-    if (settings_.damping_fraction > 0 && dt > 0) {
-      double face_mass = 0;
-      for (int a = 0; a < 4; ++a)
-        face_mass += shape[a] * geometry_.mass[face[a]];
-      const double slave_mass = geometry_.mass[slave_node];
-      const double reduced = slave_mass * face_mass / (slave_mass + face_mass);
-      const double damping = 2 * settings_.damping_fraction * std::sqrt(k * reduced);
-      // No tension: the damper may only lower the force to zero.
-      const double damper = std::max(-damping * approach / dt, -normal_force);
-      normal_force += damper;
-      totals_.dissipated += -damper * approach;
-    }
-
-    Vector tangential{};
-    contact.slipping = false;
-    contact.slip_velocity = {0, 0, 0};
-    if (friction) {
-      // The previous friction force turned into the new tangent plane, its length kept.
-      Vector carried = previous_tangential;
-      const double off_plane = dot(carried, n);
-      const double length = norm(carried);
-      for (int d = 0; d < 3; ++d)
-        carried[d] -= off_plane * n[d];
-      const double carried_length = norm(carried);
-      if (carried_length > 0)
-        for (double& value : carried)
-          value *= length / carried_length;
-      Vector increment{};
-      for (int d = 0; d < 3; ++d)
-        increment[d] = relative[d] - approach * n[d];
-      const double slip_speed = dt > 0 ? norm(increment) / dt : 0.0;
-      contact.coefficient = settings_.friction.coefficient(slip_speed);
-      Vector trial{};
-      for (int d = 0; d < 3; ++d)
-        trial[d] = carried[d] - k * increment[d];
-      const double trial_length = norm(trial);
-      const double bound = contact.coefficient * normal_force;
-      tangential = trial;
-      if (trial_length > bound) {
-        contact.slipping = true;
-        const double slip = (trial_length - bound) / k;
-        for (int d = 0; d < 3; ++d) {
-          tangential[d] = trial[d] * bound / trial_length;
-          if (dt > 0)
-            contact.slip_velocity[d] = -trial[d] / trial_length * slip / dt;
-        }
-        totals_.dissipated += bound * slip;
-        totals_.frictional_work += bound * slip;
-      }
-      totals_.friction_bound += bound;
-    }
-    contact.normal_force = normal_force;
-    contact.tangential_force = tangential;
-
-    Vector total{};
-    for (int d = 0; d < 3; ++d)
-      total[d] = normal_force * n[d] + tangential[d];
-    for (int d = 0; d < 3; ++d) {
-      force[3 * slave_node + d] += total[d];
-      for (int a = 0; a < 4; ++a)
-        force[3 * face[a] + d] -= shape[a] * total[d];
-      totals_.force[d] += total[d];
-      weighted_normal[d] += normal_force * n[d];
-    }
-    totals_.normal_force += normal_force;
-    totals_.area += geometry_.slave_area[s];
-    totals_.active += 1;
-    totals_.slipping += contact.slipping ? 1 : 0;
-    totals_.max_penetration = std::max(totals_.max_penetration, -contact.gap);
-    totals_.stored_energy += 0.5 * k * contact.gap * contact.gap +
-                             (friction ? 0.5 * dot(tangential, tangential) / k : 0);
+    if (searching)
+      close_window(x);
+  } else {
+    for (int s : window_slaves_)
+      evaluate_slave(static_cast<std::size_t>(s), x, du, dt, weighted_normal, force);
   }
   const double length = norm(weighted_normal);
   if (length > 0)
     for (int d = 0; d < 3; ++d)
       totals_.normal[d] = weighted_normal[d] / length;
+}
+
+double PenaltyContactPair::evaluate_slave(std::size_t s, const double* x, const double* du,
+                                          double dt, Vector& weighted_normal, double* force) {
+  const bool friction = settings_.friction.kind != FrictionLaw::Kind::none;
+  SlaveContact& contact = slaves_[s];
+  const Vector previous_tangential = contact.tangential_force;
+  const double gap = contact_point(static_cast<int>(s), x);
+  if (contact.face < 0) {
+    contact = SlaveContact{};
+    return gap;
+  }
+  const int slave_node = geometry_.slave_nodes[s];
+  const auto& face = geometry_.master_faces[contact.face];
+  const std::array<double, 4> shape = quad_shape_functions(contact.xi, contact.eta);
+  const double k = stiffness(s, contact.face);
+  const Vector& n = contact.normal;
+
+  // Relative increment of the slave over the master point during the step.
+  Vector relative{};
+  for (int d = 0; d < 3; ++d) {
+    relative[d] = du[3 * slave_node + d];
+    for (int a = 0; a < 4; ++a)
+      relative[d] -= shape[a] * du[3 * face[a] + d];
+  }
+  const double approach = dot(relative, n);
+
+  double normal_force = -k * contact.gap;
+  if (settings_.damping_fraction > 0 && dt > 0) {
+    double face_mass = 0;
+    for (int a = 0; a < 4; ++a)
+      face_mass += shape[a] * geometry_.mass[face[a]];
+    const double slave_mass = geometry_.mass[slave_node];
+    const double reduced = slave_mass * face_mass / (slave_mass + face_mass);
+    const double damping = 2 * settings_.damping_fraction * std::sqrt(k * reduced);
+    // No tension: the damper may only lower the force to zero.
+    const double damper = std::max(-damping * approach / dt, -normal_force);
+    normal_force += damper;
+    totals_.dissipated += -damper * approach;
+  }
+
+  Vector tangential{};
+  contact.slipping = false;
+  contact.slip_velocity = {0, 0, 0};
+  if (friction) {
+    // The previous friction force turned into the new tangent plane, its length kept.
+    Vector carried = previous_tangential;
+    const double off_plane = dot(carried, n);
+    const double length = norm(carried);
+    for (int d = 0; d < 3; ++d)
+      carried[d] -= off_plane * n[d];
+    const double carried_length = norm(carried);
+    if (carried_length > 0)
+      for (double& value : carried)
+        value *= length / carried_length;
+    Vector increment{};
+    for (int d = 0; d < 3; ++d)
+      increment[d] = relative[d] - approach * n[d];
+    const double slip_speed = dt > 0 ? norm(increment) / dt : 0.0;
+    contact.coefficient = settings_.friction.coefficient(slip_speed);
+    Vector trial{};
+    for (int d = 0; d < 3; ++d)
+      trial[d] = carried[d] - k * increment[d];
+    const double trial_length = norm(trial);
+    const double bound = contact.coefficient * normal_force;
+    tangential = trial;
+    if (trial_length > bound) {
+      contact.slipping = true;
+      const double slip = (trial_length - bound) / k;
+      for (int d = 0; d < 3; ++d) {
+        tangential[d] = trial[d] * bound / trial_length;
+        if (dt > 0)
+          contact.slip_velocity[d] = -trial[d] / trial_length * slip / dt;
+      }
+      totals_.dissipated += bound * slip;
+      totals_.frictional_work += bound * slip;
+    }
+    totals_.friction_bound += bound;
+  }
+  contact.normal_force = normal_force;
+  contact.tangential_force = tangential;
+
+  Vector total{};
+  for (int d = 0; d < 3; ++d)
+    total[d] = normal_force * n[d] + tangential[d];
+  for (int d = 0; d < 3; ++d) {
+    force[3 * slave_node + d] += total[d];
+    for (int a = 0; a < 4; ++a)
+      force[3 * face[a] + d] -= shape[a] * total[d];
+    totals_.force[d] += total[d];
+    weighted_normal[d] += normal_force * n[d];
+  }
+  totals_.normal_force += normal_force;
+  totals_.area += geometry_.slave_area[s];
+  totals_.active += 1;
+  totals_.slipping += contact.slipping ? 1 : 0;
+  totals_.max_penetration = std::max(totals_.max_penetration, -contact.gap);
+  totals_.stored_energy +=
+      0.5 * k * contact.gap * contact.gap + (friction ? 0.5 * dot(tangential, tangential) / k : 0);
+  return gap;
 }
 
 std::vector<double> PenaltyContactPair::state() const {

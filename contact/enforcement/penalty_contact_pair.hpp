@@ -106,7 +106,20 @@ class PenaltyContactPair {
   /// One step: contact points at \p x, increments \p du of the step (3 per surface node),
   /// step \p dt (s; 0 at the start: no friction increment), largest surface speed \p max_speed
   /// (m/s, for the search). Adds the contact forces to \p force (3 per surface node).
+  /// Between searches only the window's slaves are evaluated: the others cannot reach a master
+  /// face before the next search (see window_nodes()).
   void evaluate(const double* x, const double* du, double dt, double max_speed, double* force);
+  /// Whether evaluate() with these arguments reads only window_nodes(): not when it rebuilds the
+  /// search first (the first call, every Search interval steps, or sooner when the surfaces move
+  /// further than the capture allows), nor without a step (\p dt 0: statics and the start, where
+  /// the motion since the search is unknown).
+  bool window_suffices(double dt, double max_speed) const;
+  /// The surface nodes whose positions and increments the evaluations until the next search read:
+  /// the slaves that were within twice the reach (the most any node can move until the next
+  /// search) of the master surface at the last search, and the nodes of every master face they
+  /// can reach, ascending. Every other slave stays out of contact until then, so its contact
+  /// state (none) is already known.
+  const std::vector<int>& window_nodes() const { return window_nodes_; }
   /// Per slave node, in the order of the geometry's slave_nodes.
   const std::vector<SlaveContact>& slaves() const { return slaves_; }
   /// Sums of the last evaluate().
@@ -122,13 +135,27 @@ class PenaltyContactPair {
 
  private:
   void search(const double* x, double dt, double max_speed);
-  void contact_point(int slave, const double* x);
+  // Sets slaves_[slave]'s contact point at \p x; returns the signed distance to the nearest
+  // candidate face (+inf without one).
+  double contact_point(int slave, const double* x);
+  bool search_due(double dt, double max_speed) const;
+  // After a search: adds \p slave to the window if its distance \p gap can close before the
+  // next search; close_window() then adds the master nodes the window's slaves can reach.
+  void add_to_window(int slave, double gap);
+  void close_window(const double* x);
+  // Contact point, friction and forces of slave \p s for evaluate(); returns contact_point()'s gap.
+  double evaluate_slave(std::size_t s, const double* x, const double* du, double dt,
+                        std::array<double, 3>& weighted_normal, double* force);
 
   PenaltyPairGeometry geometry_;
   PenaltyPairSettings settings_;
   std::unique_ptr<BucketSearch> search_;
   std::vector<int> scratch_;
   std::vector<SlaveContact> slaves_;
+  std::vector<int> window_slaves_;  // slaves evaluated between searches, ascending
+  std::vector<int> window_nodes_;   // see window_nodes()
+  double window_reach_ = 0;         // bound on any node's motion until the next search (m)
+  bool window_valid_ = false;       // the window covers the motion since the last search
   PenaltyPairTotals totals_;
   double stable_step_ = 1e300;
   long long calls_ = 0;

@@ -156,6 +156,19 @@ void BucketSearch::candidates(const double* point, std::vector<int>& out) const 
   }
 }
 
+void BucketSearch::faces_overlapping(const std::array<double, 6>& box,
+                                     std::vector<int>& out) const {
+  out.clear();
+  for (std::size_t f = 0; f < boxes_.size(); ++f) {
+    const Box& face = boxes_[f];
+    bool overlaps = true;
+    for (int d = 0; d < 3; ++d)
+      overlaps = overlaps && face[d] <= box[3 + d] && box[d] <= face[3 + d];
+    if (overlaps)
+      out.push_back(static_cast<int>(f));
+  }
+}
+
 namespace {
 
 QuadProjection project_face(const std::array<int, 4>& nodes, const double* positions,

@@ -28,6 +28,10 @@ class BucketSearch {
   /// Appends to \p out (cleared first) the faces whose grown bounding box may contain \p point,
   /// each once, in increasing order.
   void candidates(const double* point, std::vector<int>& out) const;
+  /// Appends to \p out (cleared first) every face whose grown bounding box overlaps \p box
+  /// (lower x, y, z, upper x, y, z), in increasing order: the faces candidates() can return for
+  /// any point in \p box. O(faces).
+  void faces_overlapping(const std::array<double, 6>& box, std::vector<int>& out) const;
   /// The faces.
   const std::vector<std::array<int, 4>>& faces() const { return faces_; }
   /// The capture distance of the last rebuild (m).

@@ -230,5 +230,75 @@ TEST(PenaltyContact, NodeCrossingTheEdgeOfAValleyIsNeverLost) {
   }
 }
 
+// Forty slaves at 0 to 117 µm above a strip of ten unit faces close on it at 2 µm a step (slaves
+// down, master up, 10 m/s each). Between searches only the window's slaves are evaluated; every
+// step must give the same forces, bit for bit, as a pair that searches every step (and so
+// evaluates every slave), and the window must hold fewer slaves than the pair.
+TEST(PenaltyContact, WindowBetweenSearchesMissesNoContact) {
+  const int faces = 10, slaves = 40;
+  const auto strip = [&](int interval) {
+    PenaltyPairGeometry geometry;
+    geometry.n_surface_nodes = 2 * (faces + 1) + slaves;
+    for (int f = 0; f < faces; ++f) {
+      geometry.master_faces.push_back({2 * f, 2 * f + 2, 2 * f + 3, 2 * f + 1});
+      geometry.face_stiffness.push_back(kStiffness);
+    }
+    for (int s = 0; s < slaves; ++s) {
+      geometry.slave_nodes.push_back(2 * (faces + 1) + s);
+      geometry.slave_area.push_back(1e-6);
+    }
+    geometry.mass.assign(geometry.n_surface_nodes, 1.0);
+    PenaltyPairSettings settings;
+    settings.name = "strip";
+    settings.search_margin = 0.1;
+    settings.search_interval = interval;
+    return PenaltyContactPair(geometry, settings);
+  };
+  PenaltyContactPair windowed = strip(10), reference = strip(1);
+  const double dt = 1e-7, speed = 10;
+  std::vector<double> x(3 * (2 * (faces + 1) + slaves), 0.0);
+  std::vector<double> du(x.size(), 0.0);
+  for (int i = 0; i <= faces; ++i)
+    for (int j = 0; j < 2; ++j) {
+      x[3 * (2 * i + j)] = i;
+      x[3 * (2 * i + j) + 1] = j;
+      du[3 * (2 * i + j) + 2] = speed * dt;
+    }
+  for (int s = 0; s < slaves; ++s) {
+    const int node = 2 * (faces + 1) + s;
+    x[3 * node] = 2.3 + 0.01 * s;
+    x[3 * node + 1] = 0.5;
+    x[3 * node + 2] = 3e-6 * s;
+    du[3 * node + 2] = -speed * dt;
+  }
+  int most_active = 0;
+  for (int step = 0; step < 70; ++step) {
+    for (std::size_t i = 0; i < x.size(); ++i)
+      x[i] += du[i];
+    std::vector<double> force(x.size(), 0.0), expected(x.size(), 0.0);
+    windowed.evaluate(x.data(), du.data(), dt, speed, force.data());
+    reference.evaluate(x.data(), du.data(), dt, speed, expected.data());
+    ASSERT_EQ(force, expected) << "step " << step;
+    ASSERT_EQ(windowed.totals().active, reference.totals().active) << "step " << step;
+    most_active = std::max(most_active, windowed.totals().active);
+    if (step == 0) {
+      // Face 2 (nodes 4-7) lies under the slaves; face 7 (nodes 14-17) is far from them.
+      const std::vector<int>& window = windowed.window_nodes();
+      const auto holds = [&](int node) {
+        return std::binary_search(window.begin(), window.end(), node);
+      };
+      int window_slaves = 0;
+      for (int s = 0; s < slaves; ++s)
+        window_slaves += holds(2 * (faces + 1) + s) ? 1 : 0;
+      EXPECT_GT(window_slaves, 0);
+      EXPECT_LT(window_slaves, slaves);
+      for (int node : {4, 5, 6, 7})
+        EXPECT_TRUE(holds(node)) << "master node " << node;
+      EXPECT_FALSE(holds(14));
+    }
+  }
+  EXPECT_EQ(most_active, slaves);  // every slave came into contact on the way
+}
+
 }  // namespace
 }  // namespace railfe

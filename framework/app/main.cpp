@@ -18,6 +18,7 @@
 
 #include "framework/app/deck_layout.hpp"
 #include "framework/app/runner.hpp"
+#include "framework/base/blas_threads.hpp"
 
 namespace {
 
@@ -81,6 +82,8 @@ int main(int argc, char** argv) {
   Tpetra::ScopeGuard scope(&argc, &argv);
   railfe::Communicator comm(MPI_COMM_WORLD);
   const bool root = comm.is_root();
+  // One BLAS thread per rank: the ranks already fill the cores (direct solvers lend rank 0 more).
+  railfe::set_blas_threads(1);
   try {
     railfe::ModuleRegistry registry;
     railfe::register_physics(registry);

@@ -256,6 +256,14 @@ void LinearConstraints::recover(TpetraVector& solution) const {
   solution.update(1.0, *shift_, 1.0);
 }
 
+bool LinearConstraints::holds_prescribed_values(const TpetraVector& u) const {
+  const auto data = u.getData();
+  long long broken = n_multipoint_ > 0 ? 1 : 0;
+  for (const auto& [dof, value] : prescribed_)
+    broken += data[dof] != value ? 1 : 0;
+  return dofs_->partition().comm().sum(broken) == 0;
+}
+
 void LinearConstraints::reactions(const TpetraVector& u, TpetraVector& r) const {
   r.putScalar(0.0);
   if (reaction_columns_.is_null())

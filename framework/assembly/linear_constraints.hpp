@@ -58,6 +58,10 @@ class LinearConstraints {
   Teuchos::RCP<TpetraMatrix> constrained_mass(const Teuchos::RCP<TpetraMatrix>& M) const;
   /// Turns the solution of the constrained system into u, in place (collective).
   void recover(TpetraVector& solution) const;
+  /// Whether \p u has every prescribed value exactly and no multi-point constraint exists
+  /// (collective): then u and any solution of apply()'s system are joined by steps that keep the
+  /// constraints.
+  bool holds_prescribed_values(const TpetraVector& u) const;
   /// Reaction forces r = K u − f at prescribed DOFs (zero elsewhere), from the rows apply() kept.
   void reactions(const TpetraVector& u, TpetraVector& r) const;
 

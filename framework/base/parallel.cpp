@@ -1,5 +1,9 @@
 #include "framework/base/parallel.hpp"
 
+#include <algorithm>
+#include <chrono>
+#include <thread>
+
 #include <Teuchos_DefaultMpiComm.hpp>
 
 #include "framework/base/error.hpp"
@@ -17,6 +21,25 @@ Teuchos::RCP<const Teuchos::Comm<int>> Communicator::teuchos() const {
 
 void Communicator::barrier() const {
   MPI_Barrier(comm_);
+}
+
+void Communicator::quiet_barrier() const {
+  using Clock = std::chrono::steady_clock;
+  MPI_Request request;
+  MPI_Ibarrier(comm_, &request);
+  const Clock::time_point start = Clock::now();
+  int done = 0;
+  MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+  while (!done) {
+    // Open MPI polls at full speed inside a blocking call: only a sleep gives the core away.
+    // Each nap is a tenth of the wait so far (50 µs to 2 ms): a short wait is barely lengthened,
+    // and a long one costs well under 1 % of a core.
+    const Clock::duration waited = Clock::now() - start;
+    if (waited > std::chrono::milliseconds(1))
+      std::this_thread::sleep_for(std::clamp<Clock::duration>(
+          waited / 10, std::chrono::microseconds(50), std::chrono::milliseconds(2)));
+    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+  }
 }
 
 void Communicator::broadcast(std::string& text) const {

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "framework/base/error.hpp"
 #include "framework/base/resources.hpp"
@@ -62,6 +63,54 @@ class ProgressPreconditioner : public TpetraOperator {
   mutable long applications_ = 0;
 };
 
+// What one Belos solve ended with.
+struct BelosRun {
+  Belos::ReturnType outcome = Belos::Unconverged;
+  int iterations = 0;
+};
+
+// Belos throws when CG meets p·Ap <= 0: the matrix or the preconditioner is not positive definite.
+struct BelosBreakdown : std::runtime_error {
+  BelosBreakdown(const std::string& what, int iterations_done)
+      : std::runtime_error(what), iterations(iterations_done) {}
+  int iterations;
+};
+
+// Runs the Belos solver \p settings names on A x = b from the guess in \p x, with the optional
+// left and right preconditioners (collective).
+BelosRun run_belos(const KrylovSettings& settings, const Teuchos::RCP<const TpetraMatrix>& A,
+                   const Teuchos::RCP<TpetraOperator>& left,
+                   const Teuchos::RCP<TpetraOperator>& right, const TpetraVector& b,
+                   TpetraVector& x) {
+  using MV = TpetraMultiVector;
+  using OP = TpetraOperator;
+  auto parameters = Teuchos::rcp(new Teuchos::ParameterList);
+  parameters->set("Convergence Tolerance", settings.relative_tolerance);
+  parameters->set("Maximum Iterations", settings.maximum_iterations);
+  if (settings.method == "gmres")
+    parameters->set("Num Blocks", settings.restart);
+  parameters->set("Verbosity", Belos::Errors + Belos::Warnings);
+  Belos::SolverFactory<double, MV, OP> factory;
+  auto solver = factory.create(settings.method == "cg" ? "CG" : "GMRES", parameters);
+  auto op = Teuchos::rcp_implicit_cast<const OP>(A);
+  auto problem = Teuchos::rcp(
+      new Belos::LinearProblem<double, MV, OP>(op, Teuchos::rcpFromRef(x), Teuchos::rcpFromRef(b)));
+  if (!left.is_null())
+    problem->setLeftPrec(left);
+  if (!right.is_null())
+    problem->setRightPrec(right);
+  problem->setProblem();
+  solver->setProblem(problem);
+  BelosRun run;
+  try {
+    run.outcome = solver->solve();
+  } catch (const std::exception& error) {
+    throw BelosBreakdown(error.what(), solver->getNumIters());
+  }
+  run.iterations = solver->getNumIters();
+  return run;
+}
+
 class KrylovSolver : public LinearSolver {
  public:
   explicit KrylovSolver(const KrylovSettings& settings) : settings_(settings) {}
@@ -82,8 +131,6 @@ class KrylovSolver : public LinearSolver {
   }
 
   SolveReport solve(const TpetraVector& b, TpetraVector& x) override {
-    using MV = TpetraMultiVector;
-    using OP = TpetraOperator;
     Stopwatch clock;
     SolveReport report;
     report.method = std::string(settings_.method == "cg" ? "CG" : "GMRES") + " + " +
@@ -94,42 +141,27 @@ class KrylovSolver : public LinearSolver {
       report.solve_seconds = clock.seconds();
       return report;
     }
-    auto parameters = Teuchos::rcp(new Teuchos::ParameterList);
-    parameters->set("Convergence Tolerance", settings_.relative_tolerance);
-    parameters->set("Maximum Iterations", settings_.maximum_iterations);
-    if (settings_.method == "gmres")
-      parameters->set("Num Blocks", settings_.restart);
-    parameters->set("Verbosity", Belos::Errors + Belos::Warnings);
-    Belos::SolverFactory<double, MV, OP> factory;
-    auto solver = factory.create(settings_.method == "cg" ? "CG" : "GMRES", parameters);
-    auto op = Teuchos::rcp_implicit_cast<const OP>(matrix_);
-    auto problem = Teuchos::rcp(new Belos::LinearProblem<double, MV, OP>(op, Teuchos::rcpFromRef(x),
-                                                                         Teuchos::rcpFromRef(b)));
+    Teuchos::RCP<TpetraOperator> left, right;
     if (settings_.method == "cg") {
-      if (progress_ != nullptr) {
-        problem->setLeftPrec(Teuchos::rcp(new ProgressPreconditioner(
-            preconditioner_, b.getMap(), *progress_, settings_.relative_tolerance * b.norm2())));
-      } else if (!preconditioner_.is_null()) {
-        problem->setLeftPrec(preconditioner_);
-      }
-    } else if (!preconditioner_.is_null()) {
-      problem->setRightPrec(preconditioner_);
+      left = preconditioner_;
+      if (progress_ != nullptr)
+        left = Teuchos::rcp(new ProgressPreconditioner(preconditioner_, b.getMap(), *progress_,
+                                                       settings_.relative_tolerance * b.norm2()));
+    } else {
+      right = preconditioner_;
     }
-    problem->setProblem();
-    solver->setProblem(problem);
-    Belos::ReturnType outcome = Belos::Unconverged;
+    BelosRun run;
     try {
-      outcome = solver->solve();
-    } catch (const std::exception& error) {
-      // Belos throws when CG meets p·Ap <= 0: the matrix or the preconditioner is not positive
-      // definite.
-      throw RunError(report.method + " broke down after " + std::to_string(solver->getNumIters()) +
+      run = run_belos(settings_, matrix_, left, right, b, x);
+    } catch (const BelosBreakdown& error) {
+      throw RunError(report.method + " broke down after " + std::to_string(error.iterations) +
                      " iterations: " + essential_line(error.what()) +
                      ". The matrix or the preconditioner is not positive definite: check that the "
                      "model is restrained, or try Preconditioner 'muelu-sa' or 'ilu', or a direct "
                      "Method ('cholmod').");
     }
-    report.iterations = solver->getNumIters();
+    const Belos::ReturnType outcome = run.outcome;
+    report.iterations = run.iterations;
     const ResidualNorms norms = residual_norms(*matrix_, x, b);
     report.relative_residual = norms.relative_residual;
     report.backward_error = norms.backward_error;
@@ -164,6 +196,33 @@ class KrylovSolver : public LinearSolver {
 
 std::unique_ptr<LinearSolver> make_krylov_solver(const KrylovSettings& settings) {
   return std::make_unique<KrylovSolver>(settings);
+}
+
+std::optional<SolveReport> try_preconditioned_cg(const Teuchos::RCP<const TpetraMatrix>& A,
+                                                 const Teuchos::RCP<TpetraOperator>& preconditioner,
+                                                 const TpetraVector& b, TpetraVector& x,
+                                                 double relative_tolerance,
+                                                 int maximum_iterations) {
+  Stopwatch clock;
+  KrylovSettings settings;
+  settings.relative_tolerance = relative_tolerance;
+  settings.maximum_iterations = maximum_iterations;
+  BelosRun run;
+  try {
+    run = run_belos(settings, A, preconditioner, Teuchos::null, b, x);
+  } catch (const BelosBreakdown&) {
+    return std::nullopt;
+  }
+  const ResidualNorms norms = residual_norms(*A, x, b);
+  if (run.outcome != Belos::Converged || !(norms.relative_residual <= 10 * relative_tolerance))
+    return std::nullopt;
+  SolveReport report;
+  report.method = "CG preconditioned by an earlier factorization";
+  report.iterations = run.iterations;
+  report.relative_residual = norms.relative_residual;
+  report.backward_error = norms.backward_error;
+  report.solve_seconds = clock.seconds();
+  return report;
 }
 
 }  // namespace railfe

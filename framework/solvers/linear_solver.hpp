@@ -54,6 +54,10 @@ class LinearSolver {
   /// The default solves the columns one after another; direct solvers override it to pass over
   /// their factor once for all columns (eigensolvers apply the inverse to blocks of vectors).
   virtual SolveReport solve_block(const TpetraMultiVector& B, TpetraMultiVector& X);
+  /// The inverse of the last set-up matrix as an operator, from its factorization, for use as a
+  /// preconditioner of a nearby matrix (it skips the backward-error check); null for solvers
+  /// without a factorization. It stays valid while the solver lives and follows later setups.
+  virtual Teuchos::RCP<TpetraOperator> factor_operator() { return Teuchos::null; }
   /// Reports the progress of later solves to \p progress (may be null; it must outlive the
   /// solves). Iterative solvers report the share of the residual reduction achieved.
   void report_progress_to(Progress* progress) { progress_ = progress; }
@@ -62,6 +66,8 @@ class LinearSolver {
   /// every eigenpair against K and M, may turn it off: it costs a matrix product per column,
   /// a third of a shift-inverted Krylov step.
   void check_solutions(bool check) { check_solutions_ = check; }
+  /// Whether direct solvers check every solution (see check_solutions(bool)).
+  bool checks_solutions() const { return check_solutions_; }
 
  protected:
   Progress* progress_ = nullptr;  ///< where solves report progress, or null

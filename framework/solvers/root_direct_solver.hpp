@@ -22,6 +22,7 @@ class RootDirectSolver : public LinearSolver {
   void setup(const Teuchos::RCP<const TpetraMatrix>& A, const ProblemTraits& traits) final;
   SolveReport solve(const TpetraVector& b, TpetraVector& x) final;
   SolveReport solve_block(const TpetraMultiVector& B, TpetraMultiVector& X) final;
+  Teuchos::RCP<TpetraOperator> factor_operator() final;
 
  protected:
   /// Factorizes \p matrix (called on rank 0 only). Returns "" or the problem, phrased for users.

@@ -6,8 +6,11 @@
 
 #include <Tpetra_Core.hpp>
 
+#include "framework/base/blas_threads.hpp"
+
 int main(int argc, char** argv) {
   Tpetra::ScopeGuard scope(&argc, &argv);
+  railfe::set_blas_threads(1);  // as railfe itself: the ranks fill the cores
   ::testing::InitGoogleTest(&argc, argv);
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);

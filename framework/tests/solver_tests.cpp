@@ -10,12 +10,18 @@
 #include <Tpetra_Vector.hpp>
 
 #include <cmath>
+#include <ctime>
+#include <thread>
+
+#include <TpetraExt_MatrixMatrix.hpp>
 
 #include "framework/assembly/fe_matrix.hpp"
+#include "framework/assembly/sparse_entries.hpp"
 #include "framework/base/error.hpp"
 #include "framework/deck/validation.hpp"
 #include "framework/mesh/box_generator.hpp"
 #include "framework/solvers/direct_solvers.hpp"
+#include "framework/solvers/krylov_solver.hpp"
 #include "framework/solvers/linear_solver.hpp"
 #include "framework/solvers/solution_check.hpp"
 
@@ -116,6 +122,73 @@ TEST(Solvers, EveryMethodAgreesWithCholmod) {
     const TpetraVector x = solve(problem, solver_list(method, preconditioner), true, &report);
     EXPECT_LT(relative_difference(x, reference), 1e-8) << method << " + " << preconditioner;
     EXPECT_LT(report.relative_residual, 1e-9) << method << " + " << preconditioner;
+  }
+}
+
+// A matrix that differs from a factorized one by stiff springs on a few DOFs (as a contact
+// iteration's tangent differs from the last one): CG preconditioned by the old factor solves it
+// in about as many iterations as changed DOFs, to the direct solution; a matrix changed
+// everywhere is not solved within a few iterations and CG says so instead of throwing.
+TEST(Solvers, FactorOfANearbyMatrixPreconditionsCg) {
+  Problem problem(1.0, 0.0);
+  auto solver = create_linear_solver(solver_list("cholmod", "none"));
+  ProblemTraits traits;
+  traits.dofs_per_node = 3;
+  const auto A = problem.matrix->matrix();
+  solver->setup(A, traits);
+  const Teuchos::RCP<TpetraOperator> factor = solver->factor_operator();
+  ASSERT_FALSE(factor.is_null());
+
+  const auto map = problem.dofs->owned_map();
+  const auto changed = [&](const std::vector<GlobalIndex>& rows, double spring) {
+    std::vector<MatrixEntry> entries;
+    for (GlobalIndex row : rows)
+      if (map->isNodeGlobalElement(row))
+        entries.emplace_back(row, row, spring);
+    auto springs = matrix_from_entries(map, std::move(entries));
+    return Teuchos::rcp_const_cast<const TpetraMatrix>(
+        Tpetra::MatrixMatrix::add(1.0, false, *A, 1.0, false, *springs));
+  };
+  const auto nearby = changed({3, 40, 41, 200, 311}, 1e4);
+  auto direct = create_linear_solver(solver_list("cholmod", "none"));
+  direct->setup(nearby, traits);
+  TpetraVector reference(map);
+  direct->solve(*problem.rhs, reference);
+
+  TpetraVector x(map);
+  const auto report = try_preconditioned_cg(nearby, factor, *problem.rhs, x, 1e-10, 40);
+  ASSERT_TRUE(report.has_value());
+  EXPECT_LE(report->iterations, 8);
+  EXPECT_LT(report->relative_residual, 1e-9);
+  EXPECT_LT(relative_difference(x, reference), 1e-8);
+
+  std::vector<GlobalIndex> every_row;
+  for (GlobalIndex row = 0; row < static_cast<GlobalIndex>(problem.dofs->n_global_dofs()); row += 2)
+    every_row.push_back(row);
+  const auto far = changed(every_row, 50.0);
+  TpetraVector y(map);
+  EXPECT_FALSE(try_preconditioned_cg(far, factor, *problem.rhs, y, 1e-10, 3).has_value());
+}
+
+// While rank 0 works alone, the other ranks wait in quiet_barrier() without spinning: their CPU
+// time over a 0.4 s wait stays a small part of it (a blocking MPI barrier polls all along).
+TEST(Communicator, QuietBarrierSleepsWhileRankZeroWorks) {
+  const Communicator comm;
+  const auto cpu_seconds = [] {
+    timespec now{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+    return now.tv_sec + 1e-9 * now.tv_nsec;
+  };
+  const auto wall = std::chrono::steady_clock::now();
+  const double cpu = cpu_seconds();
+  if (comm.is_root())
+    std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  comm.quiet_barrier();
+  const double waited =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall).count();
+  EXPECT_GE(waited, comm.is_root() ? 0.4 : 0.3);
+  if (!comm.is_root()) {
+    EXPECT_LT(cpu_seconds() - cpu, 0.25 * waited);
   }
 }
 

@@ -97,6 +97,26 @@ void ContactPairs::share(const double* x, const double* u, const double* du) {
   std::copy_n(exchange_.begin() + 3 * static_cast<std::ptrdiff_t>(n), 3 * n, increments_.begin());
 }
 
+void ContactPairs::share_window(const double* x, const double* u, const double* du) {
+  const std::size_t n = window_.size();
+  window_exchange_.assign(6 * n, 0.0);
+  for (std::size_t w = 0; w < n; ++w) {
+    const LocalIndex node = owned_[window_[w]];
+    if (node < 0)
+      continue;
+    for (int d = 0; d < 3; ++d) {
+      window_exchange_[3 * w + d] = x[3 * node + d] + u[3 * node + d];
+      window_exchange_[3 * (n + w) + d] = du[3 * node + d];
+    }
+  }
+  partition_.comm().sum_in_place(window_exchange_);
+  for (std::size_t w = 0; w < n; ++w)
+    for (int d = 0; d < 3; ++d) {
+      positions_[3 * window_[w] + d] = window_exchange_[3 * w + d];
+      increments_[3 * window_[w] + d] = window_exchange_[3 * (n + w) + d];
+    }
+}
+
 void ContactPairs::initialise(const std::vector<double>& owned_mass, double solid_step,
                               const double* x, const double* u) {
   if (specs_.empty())
@@ -242,27 +262,56 @@ void ContactPairs::add_forces(const double* x, const double* u, const double* du
   if (pairs_.empty())
     return;
   const Stopwatch clock;
-  share(x, u, du);
+  // The largest surface speed, from the owners' increments: the pairs' searches need it before
+  // the positions are shared, to know whether this step shares them all or only the windows.
   double fastest = 0;
   if (dt > 0) {
+    double largest = 0;  // squared
     for (std::size_t i = 0; i < surface_.size(); ++i) {
-      const double* increment = &increments_[3 * i];
-      fastest = std::max(fastest, std::hypot(increment[0], increment[1], increment[2]));
+      const LocalIndex node = owned_[i];
+      if (node >= 0) {
+        const double* increment = du + 3 * node;
+        largest = std::max(largest, increment[0] * increment[0] + increment[1] * increment[1] +
+                                        increment[2] * increment[2]);
+      }
     }
-    fastest /= dt;
+    fastest = std::sqrt(partition_.comm().max(largest)) / dt;
   }
-  std::fill(forces_.begin(), forces_.end(), 0.0);
+  bool all_nodes = false;
+  for (const PenaltyContactPair& pair : pairs_)
+    all_nodes = all_nodes || !pair.window_suffices(dt, fastest);
+  // Between searches every pair reads only its window (the surface nodes that can meet before
+  // the next search), a small part of the surfaces.
+  if (all_nodes) {
+    share(x, u, du);
+    std::fill(forces_.begin(), forces_.end(), 0.0);
+  } else {
+    share_window(x, u, du);
+    for (int i : window_)
+      std::fill_n(&forces_[3 * static_cast<std::size_t>(i)], 3, 0.0);
+  }
   for (std::size_t p = 0; p < pairs_.size(); ++p) {
     pairs_[p].evaluate(positions_.data(), increments_.data(), dt, fastest, forces_.data());
     if (pairs_[p].totals().active > 0)
       touched_[p] = true;
   }
-  for (std::size_t i = 0; i < surface_.size(); ++i) {
+  const auto add = [&](std::size_t i) {
     const LocalIndex node = owned_[i];
-    if (node < 0)
-      continue;
-    for (int d = 0; d < 3; ++d)
-      residual[3 * node + d] += forces_[3 * i + d];
+    if (node >= 0)
+      for (int d = 0; d < 3; ++d)
+        residual[3 * node + d] += forces_[3 * i + d];
+  };
+  if (all_nodes) {
+    for (std::size_t i = 0; i < surface_.size(); ++i)
+      add(i);
+    window_.clear();
+    for (const PenaltyContactPair& pair : pairs_)
+      window_.insert(window_.end(), pair.window_nodes().begin(), pair.window_nodes().end());
+    std::sort(window_.begin(), window_.end());
+    window_.erase(std::unique(window_.begin(), window_.end()), window_.end());
+  } else {
+    for (int i : window_)
+      add(static_cast<std::size_t>(i));
   }
   seconds_ += clock.seconds();
 }

@@ -91,6 +91,8 @@ class ContactPairs {
 
  private:
   void share(const double* x, const double* u, const double* du);
+  // Shares the positions and increments of the window_ nodes only.
+  void share_window(const double* x, const double* u, const double* du);
 
   std::vector<ContactPairSpec> specs_;
   const MeshPartition& partition_;
@@ -101,6 +103,8 @@ class ContactPairs {
   std::vector<ContactSurfaceNodes> surfaces_;  // per pair, global numbers
   std::vector<PenaltyContactPair> pairs_;
   std::vector<double> exchange_, positions_, increments_, forces_;
+  std::vector<int> window_;  // surface nodes any pair reads until its next search, ascending
+  std::vector<double> window_exchange_;
   std::vector<bool> touched_;
   std::vector<ContactMassScaling> mass_scaling_;
   std::vector<std::array<double, 2>> master_elastic_;  // per pair: G (Pa), nu

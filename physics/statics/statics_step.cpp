@@ -268,8 +268,15 @@ void StaticsStep::run(StepContext& context) {
   if (contact) {
     summary.add(section, "contact pairs", static_cast<double>(contact_pairs_.size()));
     summary.add(section, "contact iterations", newton.iterations);
+    if (newton.reused_factorizations > 0) {
+      summary.add(section, "contact iterations with a new factorization", newton.factorizations);
+      summary.add(section, "contact iterations by CG on an earlier factorization",
+                  newton.reused_factorizations);
+    }
     summary.add(section, "contact out-of-balance force (relative)", newton.residual);
     summary.add(section, "active slave nodes", static_cast<double>(newton.active));
+    if (newton.line_searches > 0)
+      summary.add(section, "contact steps shortened by the line search", newton.line_searches);
     if (newton.shortened_steps > 0)
       summary.add(section, "contact steps halved (they lifted every contact off)",
                   newton.shortened_steps);
