@@ -42,14 +42,18 @@ TpetraVector contact_forces(ContactPairs& contact, const std::vector<double>& x,
 
 // K u − f less the reactions at the prescribed DOFs (from the rows the last apply() kept): the
 // out-of-balance force without the contact's, affine in u.
+// \p reactions_norm, when given, receives the reactions' 2-norm (a scale of the balance).
 TpetraVector balance_without_contact(const TpetraMatrix& K, const TpetraVector& f,
-                                     const LinearConstraints& constraints, const TpetraVector& u) {
+                                     const LinearConstraints& constraints, const TpetraVector& u,
+                                     double* reactions_norm = nullptr) {
   TpetraVector residual(u.getMap());
   K.apply(u, residual);
   residual.update(-1.0, f, 1.0);
   TpetraVector reactions(u.getMap());
   constraints.reactions(u, reactions);
   residual.update(-1.0, reactions, 1.0);
+  if (reactions_norm != nullptr)
+    *reactions_norm = reactions.norm2();
   return residual;
 }
 
@@ -184,13 +188,10 @@ ContactNewtonReport solve_with_contact(const Teuchos::RCP<TpetraMatrix>& K, cons
       f_contact = contact_forces(contact, x, u);
       ++report.shortened_steps;
     }
-    TpetraVector residual(u.getMap());
-    K->apply(u, residual);
-    residual.update(-1.0, f, -1.0, f_contact, 1.0);
-    TpetraVector reactions(u.getMap());
-    constraints.reactions(u, reactions);
-    residual.update(-1.0, reactions, 1.0);
-    const double scale = std::max({f.norm2(), reactions.norm2(), f_contact.norm2(), 1e-300});
+    double reactions_norm = 0;
+    TpetraVector residual = balance_without_contact(*K, f, constraints, u, &reactions_norm);
+    residual.update(-1.0, f_contact, 1.0);
+    const double scale = std::max({f.norm2(), reactions_norm, f_contact.norm2(), 1e-300});
     report.residual = residual.norm2() / scale;
     report.active = linear.active;
     report.contact_force = f_contact.norm2();
