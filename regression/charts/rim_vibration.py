@@ -18,7 +18,9 @@ lateral = y, radial = along the centre-to-rim line as it turns, circumferential 
 Coriolis coupling 2 Omega / omega of the other in-plane component (a few % at 1 kHz, 60 rad/s);
 displacements do not. Writes out_histories.png, out_psd.png, out_wavelet.png and out_peaks.csv
 (component, peak frequency, PSD, and the nearest mode of the modal step's <step>_modes.csv: its
-number, frequency, family, nodal circles and diameters, difference %).
+number, frequency, family, nodal circles and diameters, difference %); with --poles, also
+out_poles.csv: the damped sines ESPRIT fits to each component (damped_sines.py), which a short
+run resolves far finer than its Welch PSD, each beside its nearest mode.
 """
 import argparse
 import csv
@@ -29,6 +31,8 @@ import subprocess
 import matplotlib
 import numpy as np
 from scipy import ndimage, signal
+
+import damped_sines
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -154,21 +158,40 @@ def nearest_mode(modes, frequency):
     return min(modes, key=lambda r: abs(float(r["frequency_hz"]) - frequency), default=None)
 
 
+def mode_columns(modes, frequency):
+    """The columns of the mode nearest frequency: number, frequency, family, nodal circles and
+    diameters, difference % (empty without modes)."""
+    mode = nearest_mode(modes, frequency)
+    if mode is None:
+        return [""] * 6
+    hz = float(mode["frequency_hz"])
+    return [mode["mode"], f"{hz:.6g}", mode["family"], mode["nodal_circles"],
+            mode["nodal_diameters"], f"{100 * (frequency - hz) / hz:.4g}"]
+
+
 def peak_rows(spectra, modes, count, band, decades):
     """Rows of the peaks table: each component's peaks and their nearest modes."""
     rows = []
     for name in COMPONENTS:
         f, p = spectra[name]
         for peak, value in psd_peaks(f, p, count, band, decades):
-            mode = nearest_mode(modes, peak)
-            row = [name, f"{peak:.6g}", f"{value:.6g}"]
-            if mode is None:
-                row += [""] * 6
-            else:
-                hz = float(mode["frequency_hz"])
-                row += [mode["mode"], f"{hz:.6g}", mode["family"], mode["nodal_circles"],
-                        mode["nodal_diameters"], f"{100 * (peak - hz) / hz:.4g}"]
-            rows.append(row)
+            rows.append([name, f"{peak:.6g}", f"{value:.6g}"] + mode_columns(modes, peak))
+    return rows
+
+
+def pole_rows(t, values, modes, order, band):
+    """Rows of the poles table: each component's damped sines (damped_sines.stable_poles at
+    model order `order`) and their nearest modes."""
+    rows = []
+    for name in COMPONENTS:
+        try:
+            sines = damped_sines.stable_poles(values[name], t[1] - t[0], band, order)
+        except ValueError as error:
+            raise SystemExit(f"--poles {order}: {error}; a smaller order or a longer record")
+        for sine in sines:
+            f = sine["frequency_hz"]
+            rows.append([name, f"{f:.6g}", f"{sine['damping_ratio']:.4g}",
+                         f"{sine['rms']:.6g}"] + mode_columns(modes, f))
     return rows
 
 
@@ -238,6 +261,9 @@ def main(argv=None):
                         help="how far a peak stands above the PSD around it (decades)")
     parser.add_argument("--max-hz", type=float, default=None,
                         help="top of the charts and of the peak search (default Nyquist)")
+    parser.add_argument("--poles", type=int, default=0,
+                        help="also fit damped sines (ESPRIT, this model order; 0 = no) and "
+                        "write PREFIX_poles.csv: finer than the Welch resolution on short runs")
     a = parser.parse_args(argv)
     if a.exodus and a.rim_set:
         points = node_set_positions(a.exodus, a.rim_set)
@@ -279,6 +305,17 @@ def main(argv=None):
         out.writerow(["component", "peak_hz", "psd", "mode", "mode_hz", "family",
                       "nodal_circles", "nodal_diameters", "difference_percent"])
         out.writerows(rows)
+    if a.poles < 0:
+        raise SystemExit(f"--poles {a.poles}: a model order is 0 (none) or more")
+    if a.poles:
+        # A sine needs a period and a half in the record to be told from its trend.
+        poles = pole_rows(t, values, modes, a.poles, (1.5 / (t[-1] - t[0]), top))
+        with open(a.prefix + "_poles.csv", "w", newline="") as handle:
+            out = csv.writer(handle)
+            out.writerow(["component", "frequency_hz", "damping_ratio", "rms", "mode", "mode_hz",
+                          "family", "nodal_circles", "nodal_diameters", "difference_percent"])
+            out.writerows(poles)
+        print(f"{a.prefix}_poles.csv: {len(poles)} damped sines (model order {a.poles})")
     draw(a.prefix, t, values, spectra, np.linspace(max(df, top / 200), top, 160),
          UNITS[a.quantity], rows)
     print(f"{a.prefix}_peaks.csv: {len(rows)} peaks; frequency resolution {df:.4g} Hz")

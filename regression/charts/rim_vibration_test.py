@@ -4,7 +4,8 @@ in the wheel's turning frame, is a sum of sines at known frequencies per compone
 radial, circumferential) plus white noise, carried by the rigid rolling motion (centre moving
 along x and bobbing, spin varying around V / R). The chart must find every frequency within
 the Welch frequency resolution in the right component, match each to the nearest mode of
-a modes CSV, and its Morlet transform must peak at a sine's frequency.
+a modes CSV, and its Morlet transform must peak at a sine's frequency; the damped-sine fit
+(--poles) must find each within 1 Hz in its own component.
 
     /usr/bin/python3 regression/charts/rim_vibration_test.py WORK_DIR
 """
@@ -117,6 +118,22 @@ def check(rows, resolution, quantity):
     return failures
 
 
+def check_poles(path):
+    """Every sine found by the damped-sine fit within 1 Hz in its own component, as the nearest
+    mode's neighbour: the fit sees the same turning-frame components as the PSD."""
+    with open(path, newline="") as handle:
+        rows = list(csv.DictReader(handle))
+    failures = []
+    for name, sines in SINES.items():
+        found = [float(r["frequency_hz"]) for r in rows if r["component"] == name]
+        for f, _ in sines:
+            error = min((abs(p - f) for p in found), default=float("inf"))
+            print(f"poles        {name:15s} {f:7.1f} Hz: fitted at {error:.3f} Hz from it")
+            if error > 1:
+                failures.append(f"poles: {name} {f} Hz: nearest fitted sine {error:.2f} Hz off")
+    return failures
+
+
 def main(work):
     os.makedirs(work, exist_ok=True)
     failures = []
@@ -126,11 +143,14 @@ def main(work):
                 "--quantity", quantity, "--rim", *map(str, RIM), "--centre", *map(str, CENTRE),
                 "--centre-history", "axle", "--spin-history", "axle spin", "--segments", "8",
                 "--peaks", "3", "--max-hz", "2500"]
+        if quantity == "displacement":
+            args += ["--poles", "24"]
         rows, spectra = rim_vibration.main(args)
         resolution = 1 / (0.2 * 2 / 9)  # Welch segment length: 2 T / (segments + 1)
         failures += check(rows, resolution, quantity)
         if quantity == "displacement":
             failures += separation(spectra, quantity)
+            failures += check_poles(os.path.join(work, quantity + "_poles.csv"))
     t = np.arange(0, 0.05, 1e-5)
     frequencies = np.linspace(100, 2000, 96)
     power = rim_vibration.morlet_power(np.sin(2 * np.pi * 700 * t), 1e-5, frequencies)

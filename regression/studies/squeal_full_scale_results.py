@@ -20,7 +20,9 @@ For each case given (--case K DIR):
 - Table 4 and Figs. 9-10: the rim point's velocity from 2 ms, its Welch PSD (3 segments, 118 Hz)
   and the peaks matched to the modes of the run's own modal step (regression/charts/
   rim_vibration.py): docs/data/squeal_full_rim_peaks.csv (a case column added), the PSD and
-  wavelet charts to docs/img/squeal_full_rim_{psd,wavelet}_case<K>.png;
+  wavelet charts to docs/img/squeal_full_rim_{psd,wavelet}_case<K>.png; the damped sines fitted
+  to the same record (ESPRIT, regression/charts/damped_sines.py), each beside its nearest mode,
+  to docs/data/squeal_full_rim_poles.csv;
 - case 5 beside case 3 (slipping nodes, forces and bound), docs/img/
   squeal_full_case5_vs_case3.png, when both are given;
 - a summary row (window means over --window of the forces and the patch, the axle box's lateral
@@ -66,6 +68,7 @@ ROLLING_RADIUS = 0.46038  # m, the decks' r0 (omega = V / r0)
 AXLE_CENTRE = (0.7, 0.0, 0.459916265)  # m, the wheel part's Translation in the full decks
 CENTRE_LINE_TIMES = [0.0181 + 0.0001 * k for k in range(8)]
 WAVE_TIMES = [0.01855 + 2.5e-7 * k for k in range(32)]  # the decks' burst of patch files
+RIM_POLE_ORDER = 24  # ESPRIT model order: 12 damped sines per component (at three orders)
 
 
 def run(command):
@@ -258,7 +261,8 @@ def wave_speed(case, results, png):
 
 
 def rim_peaks(case, results, work):
-    """Table 4 rows of the case (its PSD peaks against its own modes)."""
+    """Table 4 rows of the case: its PSD peaks and its fitted damped sines (ESPRIT, far finer
+    than the 118 Hz of the PSD), each against its own modes."""
     prefix = os.path.join(work, f"rim_case{case}")
     run([sys.executable, os.path.join(CHARTS, "rim_vibration.py"),
          os.path.join(results, "roll_histories.csv"), os.path.join(results, "modes_modes.csv"),
@@ -266,11 +270,14 @@ def rim_peaks(case, results, work):
          "--exodus", os.path.join(results, "modes.exo"), "--rim-set", "wheel.rim point",
          "--centre", *[repr(c) for c in AXLE_CENTRE], "--speed", repr(SPEED),
          "--spin-history", "axle spin", "--start", "0.002", "--segments", "3",
-         "--max-hz", "2600", "--prominence", "0.5"])
+         "--max-hz", "2600", "--prominence", "0.5", "--poles", str(RIM_POLE_ORDER)])
     for kind in ("psd", "wavelet"):
         shutil.copy(f"{prefix}_{kind}.png", os.path.join(IMG, f"squeal_full_rim_{kind}_case{case}.png"))
-    with open(f"{prefix}_peaks.csv") as f:
-        return [dict(row, case=case) for row in csv.DictReader(f)]
+    tables = []
+    for kind in ("peaks", "poles"):
+        with open(f"{prefix}_{kind}.csv") as f:
+            tables.append([dict(row, case=case) for row in csv.DictReader(f)])
+    return tables
 
 
 def write(path, rows):
@@ -301,7 +308,7 @@ def main():
             parser.error(f"--case {number} {directory}: no summary.json (not a finished run)")
         cases[int(number)] = directory
     os.makedirs(args.work, exist_ok=True)
-    table3, summaries, peaks, waves, histories = [], [], [], [], {}
+    table3, summaries, peaks, poles, waves, histories = [], [], [], [], [], {}
     for case, results in sorted(cases.items()):
         print(f"case {case}: {results}")
         history = forces(results)
@@ -312,7 +319,9 @@ def main():
         summaries.append(summary_row(case, history, args.window, results, args.time))
         table3 += table3_rows(case, results, args.time, args.railfe, args.work)
         centre_line(case, results)
-        peaks += rim_peaks(case, results, args.work)
+        case_peaks, case_poles = rim_peaks(case, results, args.work)
+        peaks += case_peaks
+        poles += case_poles
         waves += wave_speed(case, results,
                             os.path.join(IMG, f"squeal_full_patch_waves_case{case}.png"))
     forces_chart(histories, os.path.join(IMG, "squeal_full_forces.png"))
@@ -321,6 +330,8 @@ def main():
     write(os.path.join(DATA, "squeal_full_table3.csv"), table3)
     write(os.path.join(DATA, "squeal_full_cases.csv"), summaries)
     write(os.path.join(DATA, "squeal_full_rim_peaks.csv"), peaks)
+    if poles:
+        write(os.path.join(DATA, "squeal_full_rim_poles.csv"), poles)
     if waves:
         write(os.path.join(DATA, "squeal_full_wave_speeds.csv"), waves)
     for row in table3:
