@@ -89,7 +89,7 @@ FULL = {
     # heavier until its step is 1.5 x the solids' (0.99 kg on 29,184 nodes): 79 ns steps.
     "penalty": 4, "penalty_stiffness": "bulk modulus, softer side",
     "contact_mass_scaling": 1.3e-7,
-    # About 3 h of two cores: a checkpoint every 10,000 steps (0.79 ms, 6 min), and the same
+    # About 1.7 h of two cores: a checkpoint every 10,000 steps (0.79 ms, 4 min), and the same
     # command resumes from it.
     "checkpoint": 10000,
 }
