@@ -70,7 +70,6 @@ ContactPairs::ContactPairs(const std::vector<ContactPairSpec>& specs,
       owned_[i] = local;
   }
   const std::size_t n = surface_.size();
-  exchange_.assign(6 * n, 0.0);
   positions_.assign(3 * n, 0.0);
   increments_.assign(3 * n, 0.0);
   forces_.assign(3 * n, 0.0);
@@ -79,42 +78,31 @@ ContactPairs::ContactPairs(const std::vector<ContactPairSpec>& specs,
 
 ContactPairs::~ContactPairs() = default;
 
-void ContactPairs::share(const double* x, const double* u, const double* du) {
-  std::fill(exchange_.begin(), exchange_.end(), 0.0);
-  const std::size_t n = surface_.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const LocalIndex node = owned_[i];
+void ContactPairs::share(const double* x, const double* u, const double* du,
+                         const std::vector<int>* subset) {
+  const std::size_t n = subset != nullptr ? subset->size() : surface_.size();
+  const auto surface_index = [&](std::size_t k) {
+    return subset != nullptr ? static_cast<std::size_t>((*subset)[k]) : k;
+  };
+  exchange_.assign(6 * n, 0.0);
+  for (std::size_t k = 0; k < n; ++k) {
+    const LocalIndex node = owned_[surface_index(k)];
     if (node < 0)
       continue;
     for (int d = 0; d < 3; ++d) {
-      exchange_[3 * i + d] = x[3 * node + d] + u[3 * node + d];
+      exchange_[3 * k + d] = x[3 * node + d] + u[3 * node + d];
       if (du)
-        exchange_[3 * (n + i) + d] = du[3 * node + d];
+        exchange_[3 * (n + k) + d] = du[3 * node + d];
     }
   }
   partition_.comm().sum_in_place(exchange_);
-  std::copy_n(exchange_.begin(), 3 * n, positions_.begin());
-  std::copy_n(exchange_.begin() + 3 * static_cast<std::ptrdiff_t>(n), 3 * n, increments_.begin());
-}
-
-void ContactPairs::share_window(const double* x, const double* u, const double* du) {
-  const std::size_t n = window_.size();
-  window_exchange_.assign(6 * n, 0.0);
-  for (std::size_t w = 0; w < n; ++w) {
-    const LocalIndex node = owned_[window_[w]];
-    if (node < 0)
-      continue;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = surface_index(k);
     for (int d = 0; d < 3; ++d) {
-      window_exchange_[3 * w + d] = x[3 * node + d] + u[3 * node + d];
-      window_exchange_[3 * (n + w) + d] = du[3 * node + d];
+      positions_[3 * i + d] = exchange_[3 * k + d];
+      increments_[3 * i + d] = exchange_[3 * (n + k) + d];
     }
   }
-  partition_.comm().sum_in_place(window_exchange_);
-  for (std::size_t w = 0; w < n; ++w)
-    for (int d = 0; d < 3; ++d) {
-      positions_[3 * window_[w] + d] = window_exchange_[3 * w + d];
-      increments_[3 * window_[w] + d] = window_exchange_[3 * (n + w) + d];
-    }
 }
 
 void ContactPairs::initialise(const std::vector<double>& owned_mass, double solid_step,
@@ -286,7 +274,7 @@ void ContactPairs::add_forces(const double* x, const double* u, const double* du
     share(x, u, du);
     std::fill(forces_.begin(), forces_.end(), 0.0);
   } else {
-    share_window(x, u, du);
+    share(x, u, du, &window_);
     for (int i : window_)
       std::fill_n(&forces_[3 * static_cast<std::size_t>(i)], 3, 0.0);
   }

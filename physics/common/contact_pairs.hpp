@@ -90,9 +90,10 @@ class ContactPairs {
   bool restore(const std::vector<double>& values);
 
  private:
-  void share(const double* x, const double* u, const double* du);
-  // Shares the positions and increments of the window_ nodes only.
-  void share_window(const double* x, const double* u, const double* du);
+  // Gives every rank the positions and increments (zero without du) of the surface nodes that
+  // subset lists, or of all of them (null), from their owners.
+  void share(const double* x, const double* u, const double* du,
+             const std::vector<int>* subset = nullptr);
 
   std::vector<ContactPairSpec> specs_;
   const MeshPartition& partition_;
@@ -104,7 +105,6 @@ class ContactPairs {
   std::vector<PenaltyContactPair> pairs_;
   std::vector<double> exchange_, positions_, increments_, forces_;
   std::vector<int> window_;  // surface nodes any pair reads until its next search, ascending
-  std::vector<double> window_exchange_;
   std::vector<bool> touched_;
   std::vector<ContactMassScaling> mass_scaling_;
   std::vector<std::array<double, 2>> master_elastic_;  // per pair: G (Pa), nu
