@@ -142,16 +142,18 @@ def patches(results):
     return [read_patch(os.path.join(results, f)) for f in names]
 
 
-def patch_measures(ps):
+def patch_measures(ps, row_depth=0.5 * 0.004):
     """Stick and slip over the patch instants: counts at the last, means over all, the share of
     node-instants slipping in the leading row (largest s1, the rolling direction) and the trailing
-    row, the s1 of the stick and of the slip node-instants, and the slip speed of the slipping."""
+    row (the nodes within `row_depth` of the patch's end: half the demo's 4 mm contact elements by
+    default), the s1 of the stick and of the slip node-instants, and the slip speed of the
+    slipping."""
     stick, slip, lead, trail, s1_stick, s1_slip, speeds = [], [], [], [], [], [], []
+    spacing = row_depth
     for p in ps:
         s1, slipping = p["s1_m"], p["slipping"] > 0.5
         stick.append(int((~slipping).sum()))
         slip.append(int(slipping.sum()))
-        spacing = 0.5 * 0.004  # half the demo's 4 mm contact elements: one row of nodes
         lead += list(slipping[s1 >= s1.max() - spacing])
         trail += list(slipping[s1 <= s1.min() + spacing])
         s1_stick += list(s1[~slipping])
@@ -308,13 +310,18 @@ def plot(work):
     cl.set_title("centre line at 1.6 ms (filled: stick, open: slip)", fontsize=10)
     nodes.set_ylabel("slipping nodes (20 us running mean)")
     nodes.set_title("slipping nodes", fontsize=10)
-    for axis in axes.flat:
-        axis.grid(alpha=0.3, which="both" if axis is sp else "major")
-    fig.suptitle("Squeal scene, case 5 (falling friction) at demo scale: two steps, two penalty "
-                 "factors\n(shaded: the 1.2-1.6 ms window of the measures)", fontsize=12)
+    finish_chart(fig, sp, "Squeal scene, case 5 (falling friction) at demo scale: two steps, two "
+                 "penalty factors\n(shaded: the 1.2-1.6 ms window of the measures)", PNG)
+
+
+def finish_chart(fig, spectrum_axis, title, png):
+    """Grids (minor ones on the log-log spectrum too), the title, and the PNG written."""
+    for axis in fig.axes:
+        axis.grid(alpha=0.3, which="both" if axis is spectrum_axis else "major")
+    fig.suptitle(title, fontsize=12)
     fig.tight_layout()
-    os.makedirs(os.path.dirname(PNG), exist_ok=True)
-    fig.savefig(PNG, dpi=100)
+    os.makedirs(os.path.dirname(png), exist_ok=True)
+    fig.savefig(png, dpi=100)
 
 
 def main():

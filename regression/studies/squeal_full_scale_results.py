@@ -24,9 +24,11 @@ For each case given (--case K DIR):
   to the same record (ESPRIT, regression/charts/damped_sines.py), each beside its nearest mode,
   to docs/data/squeal_full_rim_poles.csv;
 - case 5 beside case 3 (slipping nodes, forces and bound), docs/img/
-  squeal_full_case5_vs_case3.png, when both are given;
+  squeal_full_case5_vs_case3.png, from the runs given or else from their forces in docs/data;
 - a summary row (window means over --window of the forces and the patch, the axle box's lateral
   displacement at --time) to docs/data/squeal_full_cases.csv.
+The tables of all cases keep the rows of cases not given (their runs may be gone) and replace
+those of the cases given; the forces chart draws the others from their CSV in docs/data.
 
     /usr/bin/python3 regression/studies/squeal_full_scale_results.py --case 1 /tmp/case1/out \\
         --case 3 /tmp/case3/out [--railfe build/bin/railfe] [--time 0.019] [--work /tmp/sq]
@@ -68,6 +70,7 @@ ROLLING_RADIUS = 0.46038  # m, the decks' r0 (omega = V / r0)
 AXLE_CENTRE = (0.7, 0.0, 0.459916265)  # m, the wheel part's Translation in the full decks
 CENTRE_LINE_TIMES = [0.0181 + 0.0001 * k for k in range(8)]
 WAVE_TIMES = [0.01855 + 2.5e-7 * k for k in range(32)]  # the decks' burst of patch files
+RIM_START = 0.002  # s: the rim records leave out the first 2 ms (the roll's start)
 RIM_POLE_ORDER = 24  # ESPRIT model order: 12 damped sines per component (at three orders)
 
 
@@ -210,8 +213,12 @@ def falling_against_coulomb(histories, png):
     """Case 5 beside case 3 from 15.5 ms (the same lateral motion, falling friction against
     Coulomb): slipping nodes, longitudinal force with its bound mu N, lateral force."""
     fig, axes = plt.subplots(3, 1, figsize=(10, 8), sharex=True)
+    # Both at the coarser sampling (a case from docs/data has every 10th row), so that the
+    # flicker of the slipping nodes is drawn alike.
+    spacing = {case: float(np.median(np.diff(histories[case]["time_s"]))) for case in (3, 5)}
     for case, colour in ((3, "tab:blue"), (5, "tab:red")):
-        h = histories[case]
+        stride = max(1, int(round(max(spacing.values()) / spacing[case])))
+        h = {name: values[::stride] for name, values in histories[case].items()}
         late = h["time_s"] >= 0.0155
         t = 1e3 * h["time_s"][late]
         axes[0].plot(t, h["slipping_nodes"][late], color=colour, lw=0.6, label=f"case {case}")
@@ -228,8 +235,7 @@ def falling_against_coulomb(histories, png):
     for ax in axes:
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8, ncol=2)
-    fig.suptitle("Case 5 (falling friction from 15.74 ms) against case 3 (Coulomb 0.45), "
-                 "full scale")
+    fig.suptitle("Case 5 (falling friction) against case 3 (Coulomb 0.45), full scale")
     fig.tight_layout()
     fig.savefig(png, dpi=110)
     plt.close(fig)
@@ -269,14 +275,17 @@ def rim_peaks(case, results, work):
          prefix, "--history", "rim", "--quantity", "velocity",
          "--exodus", os.path.join(results, "modes.exo"), "--rim-set", "wheel.rim point",
          "--centre", *[repr(c) for c in AXLE_CENTRE], "--speed", repr(SPEED),
-         "--spin-history", "axle spin", "--start", "0.002", "--segments", "3",
+         "--spin-history", "axle spin", "--start", repr(RIM_START), "--segments", "3",
          "--max-hz", "2600", "--prominence", "0.5", "--poles", str(RIM_POLE_ORDER)])
     for kind in ("psd", "wavelet"):
         shutil.copy(f"{prefix}_{kind}.png", os.path.join(IMG, f"squeal_full_rim_{kind}_case{case}.png"))
+    record = {"record_start_s": RIM_START,
+              "record_end_s": float(roll_histories(results)["time_s"][-1])}
     tables = []
     for kind in ("peaks", "poles"):
         with open(f"{prefix}_{kind}.csv") as f:
-            tables.append([dict(row, case=case) for row in csv.DictReader(f)])
+            tables.append([dict(row, case=case, **(record if kind == "poles" else {}))
+                           for row in csv.DictReader(f)])
     return tables
 
 
@@ -288,6 +297,31 @@ def write(path, rows):
         out = csv.DictWriter(f, columns)
         out.writeheader()
         out.writerows(rows)
+
+
+def write_cases(path, rows, cases):
+    """Writes the given cases' rows into a table of all cases: rows of other cases already in
+    `path` are kept (a run of one case must not drop the others' results, whose runs may be
+    gone), and the given cases' old rows are replaced. Rows are ordered by case, stably."""
+    kept = []
+    if os.path.exists(path):
+        with open(path) as f:
+            kept = [row for row in csv.DictReader(f) if int(row["case"]) not in cases]
+    merged = sorted(kept + rows, key=lambda row: int(row["case"]))
+    if merged:
+        write(path, merged)
+
+
+def shipped_histories(exclude):
+    """The other cases' forces as the docs hold them (every 10th row), for the charts of all
+    cases when only some were given."""
+    histories = {}
+    for path in glob.glob(os.path.join(DATA, "squeal_case*_full_forces.csv")):
+        case = int(os.path.basename(path)[len("squeal_case"):].split("_")[0])
+        if case not in exclude:
+            rows = np.genfromtxt(path, delimiter=",", names=True)
+            histories[case] = {name: rows[name] for name in rows.dtype.names}
+    return histories
 
 
 def main():
@@ -324,16 +358,14 @@ def main():
         poles += case_poles
         waves += wave_speed(case, results,
                             os.path.join(IMG, f"squeal_full_patch_waves_case{case}.png"))
+    given = set(cases)
+    histories.update(shipped_histories(exclude=given))
     forces_chart(histories, os.path.join(IMG, "squeal_full_forces.png"))
     if 3 in histories and 5 in histories:
         falling_against_coulomb(histories, os.path.join(IMG, "squeal_full_case5_vs_case3.png"))
-    write(os.path.join(DATA, "squeal_full_table3.csv"), table3)
-    write(os.path.join(DATA, "squeal_full_cases.csv"), summaries)
-    write(os.path.join(DATA, "squeal_full_rim_peaks.csv"), peaks)
-    if poles:
-        write(os.path.join(DATA, "squeal_full_rim_poles.csv"), poles)
-    if waves:
-        write(os.path.join(DATA, "squeal_full_wave_speeds.csv"), waves)
+    for name, rows in (("table3", table3), ("cases", summaries), ("rim_peaks", peaks),
+                       ("rim_poles", poles), ("wave_speeds", waves)):
+        write_cases(os.path.join(DATA, f"squeal_full_{name}.csv"), rows, given)
     for row in table3:
         print(f"case {row['case']} {row['geometry']:10s} FN {float(row['FN_N']) / 1e3:7.2f} kN "
               f"Fx {float(row['Fx_N']) / 1e3:6.2f} Fy {float(row['Fy_N']) / 1e3:6.2f} kN "
