@@ -115,6 +115,15 @@ def csv_rows(path):
         return list(csv.DictReader(table))
 
 
+def kept_rows(path, column, replaced):
+    """The rows of the CSV table at `path` (none if it does not exist) whose `column` is not
+    among `replaced` (compared as text): what a study keeps of runs it was not given."""
+    if not os.path.exists(path):
+        return []
+    replaced = {str(value) for value in replaced}
+    return [row for row in csv_rows(path) if row[column] not in replaced]
+
+
 def step_section(summary, step):
     """The summary section of step `step` (its key starts with 'Step <name>')."""
     for key, value in summary.items():

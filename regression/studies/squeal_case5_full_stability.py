@@ -38,7 +38,6 @@ node-instants slipping in the leading and trailing thirds and rows of the patch,
 speeds.
 """
 import argparse
-import csv
 import json
 import os
 import shutil
@@ -51,7 +50,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.join(HERE, "..", "..")
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(ROOT, "regression", "charts"))
-from railfe_runs import step_section, write_rows  # noqa: E402
+from railfe_runs import kept_rows, step_section, write_rows  # noqa: E402
 import squeal_case5_stability as demo  # noqa: E402
 from patch_centre_line import read_patch  # noqa: E402
 
@@ -305,10 +304,7 @@ def measure(pairs):
             raise SystemExit(f"measure: run name {name!r}: one of {', '.join(RUN_NAMES)}")
         if not os.path.isfile(os.path.join(directory, "summary.json")):
             raise SystemExit(f"measure {name} {directory}: no summary.json (not a finished run)")
-    rows = []
-    if os.path.exists(CSV):
-        with open(CSV) as f:
-            rows = [r for r in csv.DictReader(f) if r["run"] not in results]
+    rows = kept_rows(CSV, "run", results)
     for name, directory in results.items():
         rows.append(measures(name, directory))
         print(f"{name}: measured {directory}", flush=True)

@@ -57,6 +57,7 @@ ROOT = os.path.join(HERE, "..", "..")
 CHARTS = os.path.join(ROOT, "regression", "charts")
 sys.path[:0] = [CHARTS, os.path.join(ROOT, "regression", "scenes")]
 import squeal_placement as placement  # noqa: E402
+from railfe_runs import kept_rows  # noqa: E402
 from make_squeal_decks import LATERAL_CREEPAGE as NOMINAL_LATERAL_CREEPAGE  # noqa: E402
 from make_squeal_decks import COULOMB_FRICTION as MU, falling_friction  # noqa: E402
 import patch_wave_speed  # noqa: E402
@@ -303,11 +304,7 @@ def write_cases(path, rows, cases):
     """Writes the given cases' rows into a table of all cases: rows of other cases already in
     `path` are kept (a run of one case must not drop the others' results, whose runs may be
     gone), and the given cases' old rows are replaced. Rows are ordered by case, stably."""
-    kept = []
-    if os.path.exists(path):
-        with open(path) as f:
-            kept = [row for row in csv.DictReader(f) if int(row["case"]) not in cases]
-    merged = sorted(kept + rows, key=lambda row: int(row["case"]))
+    merged = sorted(kept_rows(path, "case", cases) + rows, key=lambda row: int(row["case"]))
     if merged:
         write(path, merged)
 
