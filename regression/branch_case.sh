@@ -36,9 +36,10 @@ cp -r "$output/resumed" "$output/branched"
 for run in resumed branched; do
   "$@" -np "$ranks" "$railfe" "$output/$run.xml" --output "$output/$run" --quiet ||
     { echo "FAIL: the $run run failed"; exit 1; }
-  grep -q "resumed from checkpoint at step *100" "$output/$run/summary.txt" ||
-    { echo "FAIL: the $run run did not start from the checkpoint at step 100"; exit 1; }
+  grep -q "resumed from checkpoint at step *$resume_step$" "$output/$run/summary.txt" ||
+    { echo "FAIL: the $run run did not start from the checkpoint at step $resume_step"; exit 1; }
 done
+same_diagnostics "$output/resumed/summary.txt" "$output/branched/summary.txt"
 # The branched run's results directory holds its explicit step's files only: compare those.
 mkdir -p "$output/resumed-results" "$output/branched-results"
 for file in "$output"/branched/*.csv; do

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Checkpoint and restart of an explicit run: runs DECK straight through, then again with
-# checkpoints every 50 steps and an interruption after 137 steps (between checkpoints), then
-# resumes it; the resumed results must equal the uninterrupted ones to the last bit (summary
-# files aside: their wall times differ).
+# checkpoints every 50 steps (RESTART_INTERVAL steps when set) and an interruption 37 steps after
+# the second (between checkpoints), then resumes it; the resumed results must equal the uninterrupted ones to the last bit (summary
+# files aside: their wall times differ; their contact diagnostics must agree).
 # usage: restart_case.sh RAILFE COMPARE RANKS DECK OUTPUT_DIR [MPIEXEC ARGS...]
 set -u
 railfe=$1 compare=$2 ranks=$3 deck=$4 output=$5
@@ -17,8 +17,9 @@ write_checkpoint_variants
 run_interrupted "$@"
 "$@" -np "$ranks" "$railfe" "$output/resumed.xml" --output "$output/resumed" --quiet ||
   { echo "FAIL: the resumed run failed"; exit 1; }
-grep -q "resumed from checkpoint at step *100" "$output/resumed/summary.txt" ||
-  { echo "FAIL: the resumed run did not start from the checkpoint at step 100"; exit 1; }
+grep -q "resumed from checkpoint at step *$resume_step$" "$output/resumed/summary.txt" ||
+  { echo "FAIL: the resumed run did not start from the checkpoint at step $resume_step"; exit 1; }
+same_diagnostics "$output/straight/summary.txt" "$output/resumed/summary.txt"
 # Compare everything but the summaries, which hold wall times.
 for dir in straight resumed; do
   mkdir -p "$output/$dir-results"

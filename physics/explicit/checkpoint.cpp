@@ -12,8 +12,9 @@ namespace railfe {
 namespace {
 
 // The last character is the format: 2 since the contact recorder carries its patch files, 3
-// since the solver's state carries the stable step's calibration.
-constexpr char kMagic[8] = {'R', 'A', 'I', 'L', 'F', 'E', 'C', '3'};
+// since the solver's state carries the stable step's calibration, 4 since the contact recorder
+// carries the penalty flexibility at the largest normal force.
+constexpr char kMagic[8] = {'R', 'A', 'I', 'L', 'F', 'E', 'C', '4'};
 
 }  // namespace
 

@@ -181,6 +181,11 @@ std::vector<double> ContactRecorder::state() const {
       append_numbers(values, patch);
     }
   }
+  // The flexibility at the largest normal force so far, so that a resumed run reports the one
+  // an uninterrupted run would.
+  for (const PenaltyFlexibility& f : flexibility_)
+    values.insert(values.end(),
+                  {f.normal_force, f.rolling_semi_axis, f.lateral_semi_axis, f.penalty, f.patch});
   return values;
 }
 
@@ -203,6 +208,10 @@ void ContactRecorder::restore(const std::vector<double>& values) {
       write_patch_file(p, index, patch_rows_[p][index]);
     }
   }
+  for (PenaltyFlexibility& f : flexibility_)
+    for (double* field :
+         {&f.normal_force, &f.rolling_semi_axis, &f.lateral_semi_axis, &f.penalty, &f.patch})
+      *field = values.at(k++);
 }
 
 }  // namespace railfe

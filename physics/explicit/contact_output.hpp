@@ -41,12 +41,13 @@ class ContactRecorder {
   /// charts: {csv, png} each.
   std::vector<std::array<std::string, 2>> patch_charts() const;
   /// Adds each frictional pair's penalty flexibility (penalty_flexibility() at the history row
-  /// with the largest normal force that had a patch to compare with; rows before a restart are
-  /// not seen) to \p summary under \p section, and returns the warnings: pairs that never
+  /// with the largest normal force that had a patch to compare with, rows before a restart
+  /// included) to \p summary under \p section, and returns the warnings: pairs that never
   /// touched, and pairs whose penalty layer costs more than kFlexibilityWarning of the creep
   /// force where the patch sticks.
   std::vector<std::string> summarise(RunSummary& summary, const std::string& section) const;
-  /// Rows written so far, the next patch and the patch files written so far, for checkpoints.
+  /// Rows written so far, the next patch, the patch files written so far and the penalty
+  /// flexibility at the largest normal force so far, for checkpoints.
   std::vector<double> state() const;
   /// Restores state() and rewrites the rows and the patch files (rank 0), so that a resumed
   /// run's results directory holds every patch, also those written before the interruption.

@@ -444,9 +444,9 @@ TEST(Checkpoint, RoundTripAndRefusals) {
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   std::ofstream(path, std::ios::binary) << bytes.substr(0, bytes.size() - 5);
   EXPECT_THROW(read_checkpoint(path, 2), RunError);
-  // Another format (an older railfe's layout: 2 lacks the step calibration) is refused with its
-  // number, not misread.
-  for (const char format : {'1', '2'}) {
+  // Another format (an older railfe's layout: 2 lacks the step calibration, 3 the penalty
+  // flexibility) is refused with its number, not misread.
+  for (const char format : {'1', '2', '3'}) {
     write_checkpoint(path, 2, sections);
     {
       std::fstream file(path, std::ios::binary | std::ios::in | std::ios::out);
