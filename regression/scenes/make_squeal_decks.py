@@ -539,9 +539,20 @@ def header(case, p, seats, zone, arc, motion):
   Run:      railfe inputs/scenes/{name}.xml      (mpirun -np 2 ... for two ranks){checkpoint_text(p)}
   Look at:  roll_contact_wheel-rail.csv (forces), roll_contact_wheel-rail_patch_*.png (patches),
             roll_histories.csv (rim velocity, axle box), roll.exo (ParaView).
-  Charts:   python3 regression/charts/contact_force_history.py DIR/roll_contact_wheel-rail.csv
+  Charts:   python3 regression/charts/contact_force_history.py DIR/roll_contact_wheel-rail.csv{trust_text(case, p)}
 -->
 """
+
+
+def trust_text(case, p):
+    """What survives a change of step and penalty, for the case where the method is known to
+    fail (falling friction at full scale: squeal_case5_full_stability.py)."""
+    if case != 5 or p is DEMO:
+        return ""
+    return ("\n  Trust:    the forces (to 0.4 % at half the step and a quarter of the penalty), their"
+            "\n            content below 5 kHz, stick at the leading edge and where the slip lies;"
+            "\n            not the creep force above 40 kHz (penalty-friction chatter) nor single"
+            "\n            nodes' slip speeds (docs/verification.md, Case 5 at full scale).")
 
 
 def checkpoint_text(p):

@@ -289,7 +289,7 @@ def plot(rows, results):
     for axis, (x_label, y_label, title) in texts.items():
         axis.set(xlabel=x_label, ylabel=y_label)
         axis.set_title(title, fontsize=10)
-    fx.legend(fontsize=8, loc="lower left")
+    fx.legend(fontsize=8, loc="lower right")
     sp.legend(fontsize=8)
     demo.finish_chart(fig, sp, "Squeal scene, case 5 (falling friction) at full scale: two steps, "
                       "two penalty factors\n(shaded: the 16.5-19 ms window of the measures)", PNG)
