@@ -47,7 +47,8 @@ PNG = os.path.join(ROOT, "docs", "img", "squeal_steady_nonhertzian.png")
 RUNS = [("squeal_steady_penalty.csv", 3, "3 mm f 30"),
         ("squeal_steady_penalty.csv", 4, "3 mm f 10 softer"),
         ("squeal_steady_penalty_2mm_4ms.csv", 0, "2 mm f 10 softer"),
-        ("squeal_steady_penalty_2mm_4ms_matched.csv", 0, "2 mm f 10 softer, twin f 10 softer")]
+        ("squeal_steady_penalty_2mm_4ms_matched.csv", 0, "2 mm f 10 softer, twin f 10 softer"),
+        ("squeal_steady_penalty_3mm_4ms_matched.csv", 0, "3 mm f 10 softer to 4 ms, twin alike")]
 CHART_RUN = "2 mm f 10 softer"  # the run whose patch the chart draws
 RADIUS = 0.46  # m, S1002 at its running circle (y = 0)
 RAIL_OFFSET, INCLINATION = -0.0025, 40
