@@ -23,8 +23,17 @@ void CsvWriter::write_row(const std::vector<std::string>& cells) {
   if (cells.size() != n_columns_)
     throw std::logic_error("railfe: CSV row has the wrong width");
   for (std::size_t i = 0; i < cells.size(); ++i)
-    file_ << (i ? "," : "") << cells[i];
+    file_ << (i ? "," : "") << quoted(cells[i]);
   file_ << "\n";
+}
+
+std::string CsvWriter::quoted(const std::string& cell) {
+  if (cell.find_first_of(",\"\n\r") == std::string::npos)
+    return cell;
+  std::string text = "\"";
+  for (char c : cell)
+    text += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return text + "\"";
 }
 
 void CsvWriter::write_row(const std::vector<double>& values) {

@@ -15,7 +15,9 @@ class CsvWriter {
   /// Opens \p path and writes the header \p columns when \p active. Throws RunError if the file
   /// cannot be opened.
   CsvWriter(const std::string& path, const std::vector<std::string>& columns, bool active);
-  /// Writes a row of text cells (for label columns); the count must match the header.
+  /// Writes a row of text cells (for label columns); the count must match the header. A cell
+  /// holding a comma, a quote or a line break is quoted (RFC 4180), so a label such as a deck's
+  /// "umbrella (0,0)" keeps its row's columns.
   void write_row(const std::vector<std::string>& cells);
   /// Writes a row of numbers with 17 significant digits.
   void write_row(const std::vector<double>& values);
@@ -24,6 +26,9 @@ class CsvWriter {
 
   /// Formats \p value the way write_row() does.
   static std::string format(double value);
+  /// \p cell as a CSV field: unchanged, or in double quotes with its quotes doubled where it
+  /// holds a comma, a quote or a line break.
+  static std::string quoted(const std::string& cell);
 
  private:
   std::ofstream file_;

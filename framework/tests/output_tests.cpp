@@ -61,6 +61,26 @@ TEST(Csv, RoundTripsDoublesExactly) {
   EXPECT_EQ(read(dir / "h.csv"), "time_s,force_N\n9.9999999999999995e-08,-2.5\n");
 }
 
+// Labels come from decks (a reference mode "umbrella (0,0)"): a comma or a quote in one must not
+// shift the row's columns in a spreadsheet.
+TEST(Csv, QuotesTextCellsThatHoldCommasOrQuotes) {
+  EXPECT_EQ(CsvWriter::quoted("axial"), "axial");
+  EXPECT_EQ(CsvWriter::quoted("umbrella (0,0)"), "\"umbrella (0,0)\"");
+  EXPECT_EQ(CsvWriter::quoted("the \"(0,3)\" mode"), "\"the \"\"(0,3)\"\" mode\"");
+  EXPECT_EQ(CsvWriter::quoted("two\nlines"), "\"two\nlines\"");
+  const Communicator comm;
+  const auto dir = shared_scratch("csv_text", comm);
+  if (comm.is_root())
+    fs::create_directories(dir);
+  comm.barrier();
+  {
+    CsvWriter csv((dir / "t.csv").string(), {"reference", "reference_hz"}, comm.is_root());
+    csv.write_row(std::vector<std::string>{"umbrella (0,0)", "183"});
+  }
+  comm.barrier();
+  EXPECT_EQ(read(dir / "t.csv"), "reference,reference_hz\n\"umbrella (0,0)\",183\n");
+}
+
 // Work of known size gets a percentage and a time to go; iterations that stop when they
 // converge get their count and the time each, never a time to go that assumes all of them.
 TEST(Progress, IterationsUpToABoundGiveNoTimeToGo) {

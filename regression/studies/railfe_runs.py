@@ -185,8 +185,10 @@ def write_rows(path, rows):
     every digit survives), creating its directory."""
     os.makedirs(os.path.dirname(path), exist_ok=True)
     columns = list(rows[0].keys())
-    with open(path, "w") as out:
-        out.write(",".join(columns) + "\n")
+    with open(path, "w", newline="") as out:
+        # Quoted where a text holds a comma (a run's label), so that every row keeps its columns.
+        table = csv.writer(out, lineterminator="\n")
+        table.writerow(columns)
         for row in rows:
-            out.write(",".join(repr(row[c]) if isinstance(row[c], float) else str(row[c])
-                               for c in columns) + "\n")
+            table.writerow([repr(row[c]) if isinstance(row[c], float) else str(row[c])
+                            for c in columns])

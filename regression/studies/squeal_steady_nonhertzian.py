@@ -27,7 +27,6 @@ minute on one core:
 
     /usr/bin/python3 regression/studies/squeal_steady_nonhertzian.py [build/bin/railfe] [--replot]
 """
-import math
 import os
 import sys
 
