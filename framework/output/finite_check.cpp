@@ -29,11 +29,16 @@ bool is_separator(char c) {
          c == '{' || c == '}' || c == '[' || c == ']' || c == ';';
 }
 
+// A CSV line splits at its commas outside quotes (a quoted label may hold commas), so the
+// column named is the cell's.
 std::vector<std::string> split(const std::string& line, bool csv) {
   std::vector<std::string> words;
   std::string word;
+  bool quoted = false;
   for (std::size_t i = 0; i <= line.size(); ++i) {
-    const bool end = i == line.size() || (csv ? line[i] == ',' : is_separator(line[i]));
+    if (csv && i < line.size() && line[i] == '"')
+      quoted = !quoted;
+    const bool end = i == line.size() || (csv ? line[i] == ',' && !quoted : is_separator(line[i]));
     if (!end) {
       if (!(csv && is_separator(line[i])))
         word += line[i];

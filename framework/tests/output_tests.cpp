@@ -203,6 +203,10 @@ TEST(OutputDirectory, NonFiniteResultsFailTheRun) {
   EXPECT_FALSE(fs::exists(dir / "forces.csv"));
   EXPECT_EQ(find_non_finite(good), "");
   if (comm.is_root()) {
+    // A quoted label holding a comma is one cell: the NaN after it is named by its own column.
+    const std::string labelled = (dir / "modes_validation.csv.part").string();
+    std::ofstream(labelled) << "reference,computed_hz\n\"umbrella (0,0)\",nan\n";
+    EXPECT_EQ(find_non_finite(labelled), "row 1, column 'computed_hz': nan");
     const std::string summary = (dir / "summary.json.part").string();
     std::ofstream(summary) << "{\"Solver\": {\"relative residual\": inf}}\n";
     EXPECT_EQ(find_non_finite(summary), "line 1: inf");
