@@ -187,7 +187,7 @@ def plot():
     axes[1].set_xlabel("penalty factor f")
     axes[1].set_ylabel("creep force error (%)")
     axes[1].set_title("error against f, and what the penalty's flexibility predicts")
-    axes[1].legend(fontsize=7, loc="lower right")
+    axes[1].legend(fontsize=7, loc="best")
 
     for r in softer:
         axes[2].plot([r["steps"] / 1e3], [100 * abs(r["longitudinal_force_vs_exact_spin"])],
