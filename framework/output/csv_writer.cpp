@@ -31,9 +31,29 @@ std::string CsvWriter::quoted(const std::string& cell) {
   if (cell.find_first_of(",\"\n\r") == std::string::npos)
     return cell;
   std::string text = "\"";
-  for (char c : cell)
-    text += c == '"' ? std::string("\"\"") : std::string(1, c);
+  for (char c : cell) {
+    text += c;
+    if (c == '"')
+      text += c;
+  }
   return text + "\"";
+}
+
+std::vector<std::string> CsvWriter::cells(const std::string& line) {
+  std::vector<std::string> found(1);
+  bool in_quotes = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (in_quotes && c == '"' && i + 1 < line.size() && line[i + 1] == '"')
+      found.back() += line[++i];
+    else if (c == '"')
+      in_quotes = !in_quotes;
+    else if (c == ',' && !in_quotes)
+      found.emplace_back();
+    else
+      found.back() += c;
+  }
+  return found;
 }
 
 void CsvWriter::write_row(const std::vector<double>& values) {

@@ -29,6 +29,9 @@ class CsvWriter {
   /// \p cell as a CSV field: unchanged, or in double quotes with its quotes doubled where it
   /// holds a comma, a quote or a line break.
   static std::string quoted(const std::string& cell);
+  /// The cells of one line of such a file: split at the commas outside quotes, a quoted cell
+  /// unquoted (its doubled quotes single). What quoted() writes, this reads back.
+  static std::vector<std::string> cells(const std::string& line);
 
  private:
   std::ofstream file_;

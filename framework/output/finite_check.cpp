@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "framework/mesh/exodus_file.hpp"
+#include "framework/output/csv_writer.hpp"
 
 namespace railfe {
 
@@ -29,22 +30,24 @@ bool is_separator(char c) {
          c == '{' || c == '}' || c == '[' || c == ']' || c == ';';
 }
 
-// A CSV line splits at its commas outside quotes (a quoted label may hold commas), so the
-// column named is the cell's.
+// A CSV line's cells (CsvWriter::cells: a quoted label may hold commas, so the column named is
+// the cell's), each without spaces; another text file's words between separators.
 std::vector<std::string> split(const std::string& line, bool csv) {
   std::vector<std::string> words;
+  if (csv) {
+    for (std::string cell : CsvWriter::cells(line)) {
+      cell.erase(std::remove_if(cell.begin(), cell.end(), is_separator), cell.end());
+      words.push_back(cell);
+    }
+    return words;
+  }
   std::string word;
-  bool quoted = false;
   for (std::size_t i = 0; i <= line.size(); ++i) {
-    if (csv && i < line.size() && line[i] == '"')
-      quoted = !quoted;
-    const bool end = i == line.size() || (csv ? line[i] == ',' && !quoted : is_separator(line[i]));
-    if (!end) {
-      if (!(csv && is_separator(line[i])))
-        word += line[i];
+    if (i < line.size() && !is_separator(line[i])) {
+      word += line[i];
       continue;
     }
-    if (csv || !word.empty())
+    if (!word.empty())
       words.push_back(word);
     word.clear();
   }

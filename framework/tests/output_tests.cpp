@@ -45,14 +45,20 @@ fs::path shared_scratch(const std::string& name, const Communicator& comm) {
   return path;
 }
 
+// shared_scratch(), created (by rank 0, before any rank goes on).
+fs::path created_scratch(const std::string& name, const Communicator& comm) {
+  const auto path = shared_scratch(name, comm);
+  if (comm.is_root())
+    fs::create_directories(path);
+  comm.barrier();
+  return path;
+}
+
 TEST(Csv, RoundTripsDoublesExactly) {
   const double value = 0.1 + 0.2;
   EXPECT_EQ(std::stod(CsvWriter::format(value)), value);
   const Communicator comm;
-  const auto dir = shared_scratch("csv", comm);
-  if (comm.is_root())
-    fs::create_directories(dir);
-  comm.barrier();
+  const auto dir = created_scratch("csv", comm);
   {
     CsvWriter csv((dir / "h.csv").string(), {"time_s", "force_N"}, comm.is_root());
     csv.write_row(std::vector<double>{1e-7, -2.5});
@@ -68,11 +74,10 @@ TEST(Csv, QuotesTextCellsThatHoldCommasOrQuotes) {
   EXPECT_EQ(CsvWriter::quoted("umbrella (0,0)"), "\"umbrella (0,0)\"");
   EXPECT_EQ(CsvWriter::quoted("the \"(0,3)\" mode"), "\"the \"\"(0,3)\"\" mode\"");
   EXPECT_EQ(CsvWriter::quoted("two\nlines"), "\"two\nlines\"");
+  EXPECT_EQ(CsvWriter::cells("\"the \"\"(0,3)\"\" mode\",1075,"),
+            (std::vector<std::string>{"the \"(0,3)\" mode", "1075", ""}));
   const Communicator comm;
-  const auto dir = shared_scratch("csv_text", comm);
-  if (comm.is_root())
-    fs::create_directories(dir);
-  comm.barrier();
+  const auto dir = created_scratch("csv_text", comm);
   {
     CsvWriter csv((dir / "t.csv").string(), {"reference", "reference_hz"}, comm.is_root());
     csv.write_row(std::vector<std::string>{"umbrella (0,0)", "183"});

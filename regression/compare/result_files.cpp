@@ -9,6 +9,7 @@
 
 #include "framework/mesh/exodus_file.hpp"
 #include "framework/mesh/mesh_readers.hpp"
+#include "framework/output/csv_writer.hpp"
 
 namespace railfe {
 
@@ -23,31 +24,6 @@ std::size_t CsvTable::column(const std::string& name) const {
   throw std::runtime_error("no column '" + name + "'; columns:" + known);
 }
 
-namespace {
-
-// The cells of one CSV line, a quoted cell (railfe quotes text holding a comma or a quote,
-// RFC 4180) unquoted.
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> cells(1);
-  bool quoted = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-      cells.back() += '"';
-      ++i;
-    } else if (c == '"') {
-      quoted = !quoted;
-    } else if (c == ',' && !quoted) {
-      cells.emplace_back();
-    } else {
-      cells.back() += c;
-    }
-  }
-  return cells;
-}
-
-}  // namespace
-
 CsvTable read_csv(const std::string& path) {
   std::ifstream file(path);
   if (!file)
@@ -56,11 +32,11 @@ CsvTable read_csv(const std::string& path) {
   std::string line;
   if (!std::getline(file, line))
     throw std::runtime_error("'" + path + "' is empty");
-  table.columns = split(line);
+  table.columns = CsvWriter::cells(line);
   while (std::getline(file, line)) {
     if (line.empty())
       continue;
-    auto cells = split(line);
+    auto cells = CsvWriter::cells(line);
     if (cells.size() != table.columns.size()) {
       throw std::runtime_error("'" + path + "' has a row of " + std::to_string(cells.size()) +
                                " cells under " + std::to_string(table.columns.size()) + " columns");
