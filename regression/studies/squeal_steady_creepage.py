@@ -72,10 +72,16 @@ def held(path):
     return path if HOLD is None else stem + "_held" + extension
 
 
+def penalty_suffix():
+    """The held run's penalty settings in its name, where not the default."""
+    return ("" if PENALTY == 1 else f"_f{PENALTY:g}") + ("_softer" if SOFTER_SIDE else "")
+
+
 def held_name(size):
-    """The held run's name: its size, and its penalty where not the default."""
-    return (f"held_{size:g}mm" + ("" if PENALTY == 1 else f"_f{PENALTY:g}") +
-            ("_softer" if SOFTER_SIDE else ""))
+    """The held run's name: its size, its penalty where not the default, and its held creepage
+    where not the steady studies' 0.8e-3."""
+    return (f"held_{size:g}mm" + penalty_suffix() +
+            ("" if HOLD in (None, 0.8e-3) else f"_xi{HOLD:g}"))
 
 
 def run_pair(railfe, work, size, timeline, reuse):
@@ -110,7 +116,7 @@ def free_name(size):
     """The free twin's name: at f = 1 on the plain bulk modulus, or (FREE_LIKE_HELD) with the
     held run's penalty settings in its name."""
     return (f"held_{size:g}mm_free" +
-            (held_name(size)[len(f"held_{size:g}mm"):] if FREE_LIKE_HELD else ""))
+            (penalty_suffix() if FREE_LIKE_HELD else ""))
 
 
 class Timeline:

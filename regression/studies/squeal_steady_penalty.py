@@ -36,6 +36,10 @@ side at f = 10, held to 4 ms with the window 3-4 ms, as
 and the same with its free twin at the held run's penalty settings (--free-like-held: the free
 twin's own r is then railfe's report, not an estimate scaled from 3 mm):
     ... --name 2mm_4ms_matched --free-like-held
+A held creepage other than 0.8e-3 (--hold; the free twin is the same run, reused with --reuse
+from a --work that holds it): the creep curve's points, as
+    ... --size 3 --end-time 4e-3 --window 3e-3 4e-3 --free-like-held --hold 0.0004 \\
+        --name 3mm_4ms_xi0.0004 --work DIR_OF_THE_0.8e-3_PAIR --reuse
 """
 import json
 import math
@@ -156,7 +160,8 @@ def plot():
     axes[0].axvspan(*window, color="grey", alpha=0.12)
     axes[0].set_xlabel("time (ms; shaded: the window, thick: its mean)")
     axes[0].set_ylabel("creep force Fx (kN; 0.3 ms running mean)")
-    axes[0].set_title("held at ξ = 0.8e-3: the creep force at each penalty factor")
+    hold = f"{rows[0]['hold_creepage']:.2g}"
+    axes[0].set_title(f"held at ξ = {hold}: the creep force at each penalty factor")
     axes[0].legend(fontsize=8, loc="lower right")
 
     softer = [r for r in rows if r["softer_side"]]
@@ -214,7 +219,7 @@ def plot():
     axes[2].legend(fontsize=8)
     for axis in axes:
         axis.grid(alpha=0.3, which="both")
-    fig.suptitle(f"Squeal scene, case 1 held at ξ = 0.8e-3, {size:g} mm contact mesh: the "
+    fig.suptitle(f"Squeal scene, case 1 held at ξ = {hold}, {size:g} mm contact mesh: the "
                  "penalty layer's tangential flexibility is the missing creep force")
     fig.tight_layout()
     fig.savefig(PNG, dpi=100)
@@ -233,11 +238,13 @@ def main():
     parser.add_argument("--free-like-held", action="store_true",
                         help="run each free twin at its held run's penalty settings instead of "
                              "at f = 1 on the plain bulk modulus")
+    parser.add_argument("--hold", type=float, default=HOLD,
+                        help="the held run's creepage (the free twin's is 0 whatever it is)")
     args = parser.parse_args()
     global CSV, HISTORIES, PNG
     CSV, HISTORIES, PNG = outputs(args.name)
     if not args.replot:
-        steady.HOLD, steady.FREE_LIKE_HELD = HOLD, args.free_like_held
+        steady.HOLD, steady.FREE_LIKE_HELD = args.hold, args.free_like_held
         timeline = steady.Timeline(args.end_time, args.window)
         rows, columns = [], {}
         runs = [(f, False) for f in args.penalties] + [(f, True) for f in args.softer]
