@@ -57,6 +57,7 @@ DATA = os.path.join(ROOT, "docs", "data")
 FULL_CSV = os.path.join(DATA, "squeal_creep_damping_full.csv")
 DEMO_CSV = os.path.join(DATA, "squeal_creep_damping_demo.csv")
 PULSE_CSV = os.path.join(DATA, "squeal_creep_damping_pulse.csv")
+FULL_PULSE_CSV = os.path.join(DATA, "squeal_creep_damping_full_pulse.csv")
 PNG = os.path.join(ROOT, "docs", "img", "squeal_creep_damping.png")
 SPEED = 100 / 3.6  # m/s
 SHEAR_MODULUS = 210e9 / (2 * 1.3)  # Pa, the scene's steel
@@ -73,6 +74,11 @@ NEAR = 0.25  # a fitted sine names the (0,0) mode within this share of its frequ
 DECK_OPTIONS = ["--case", "3", "--scale", "demo", "--torque", "0", "--modes", "--end-time",
                 f"{END_TIME:g}", "--rail-length", "2.4", "--start-x", "0.9", "--zone-end", "0.47"]
 RUNS = ("coulomb", "frictionless")
+# The full-scale check (--full-deck, --full-results): case 3's deck with its lateral motion
+# replaced by the pulse, which leaves case 1 (driving torque, Coulomb 0.45, 19 ms) and the pulse
+# after the torque ramp, so that the (0,0) mode rings for two periods before the end.
+FULL_OPTIONS = ["--case", "3"]
+FULL_PULSE_START = 7e-3  # s
 
 
 def contact_modes(exodus, table):
@@ -120,27 +126,27 @@ def creep_damping(rows, a, b):
     return out
 
 
-def pulse_deck(friction):
-    """The demo deck in free rolling with the axle box's lateral pulse, with Coulomb friction or
-    none."""
+def pulse_deck(friction, options=DECK_OPTIONS, start=PULSE_START, scene="demo wheel in free "
+               "rolling"):
+    """The deck `options` make (the demo in free rolling unless given) with the axle box's
+    lateral pulse from `start` instead of its lateral motion, with Coulomb friction or none."""
     command = [sys.executable, os.path.join(ROOT, "regression", "scenes", "make_squeal_decks.py")]
-    text = subprocess.run(command + DECK_OPTIONS, check=True, capture_output=True,
-                          text=True).stdout
-    pulse = (f"t &lt; {PULSE_START:g} ? 0 : (t &lt; {PULSE_START + PULSE_DURATION:g} ? "
-             f"{PULSE_AMPLITUDE / 2:g}*(1 - cos(2*_pi*(t - {PULSE_START:g})/"
+    text = subprocess.run(command + options, check=True, capture_output=True, text=True).stdout
+    pulse = (f"t &lt; {start:g} ? 0 : (t &lt; {start + PULSE_DURATION:g} ? "
+             f"{PULSE_AMPLITUDE / 2:g}*(1 - cos(2*_pi*(t - {start:g})/"
              f"{PULSE_DURATION:g})) : 0)")
     text, count = re.subn(r'(name="Motion y" type="string" value=")[^"]*"',
                           lambda m: m.group(1) + pulse + '"', text)
-    assert count == 1, "the demo deck's lateral motion was not found"
+    assert count == 1, "the deck's lateral motion was not found"
     text = re.sub(r'(name="Title" type="string" value=")[^"]*"',
-                  lambda m: m.group(1) + f'Squeal demo wheel in free rolling, a lateral pulse on '
-                  f'the axle box, friction {friction}"', text, count=1)
+                  lambda m: m.group(1) + f'Squeal {scene}, a lateral pulse on the axle box, '
+                  f'friction {friction}"', text, count=1)
     if friction == "frictionless":
         text, count = re.subn(r'<Parameter name="Friction" type="string" value="coulomb"/>\s*'
                               r'<Parameter name="Friction coefficient" type="double" '
                               r'value="[^"]*"/>',
                               '<Parameter name="Friction" type="string" value="none"/>', text)
-        assert count == 1, "the demo deck's friction was not found"
+        assert count == 1, "the deck's friction was not found"
     return text
 
 
@@ -165,10 +171,10 @@ def rim_lateral_velocity(results):
             np.array([float(r["rim vy_velocity_y_m_per_s"]) for r in rows]))
 
 
-def fitted_mode(t, v, frequency):
+def fitted_mode(t, v, frequency, start=FIT_START):
     """The damped sine nearest `frequency` (within NEAR of it) in the free response after the
-    pulse; None where there is none: a mode damped past ringing leaves no sine to fit."""
-    keep = t >= FIT_START
+    pulse (from `start`); None where there is none: a mode damped past ringing leaves no sine."""
+    keep = t >= start
     sines = damped_sines.stable_poles(v[keep], t[1] - t[0], FIT_BAND, order=FIT_ORDER,
                                       floor=0.0)
     near = [s for s in sines if abs(s["frequency_hz"] / frequency - 1) <= NEAR]
@@ -215,11 +221,34 @@ def check_runs(railfe, work):
     return rows, pulse
 
 
+def full_check(results):
+    """The full-scale pulse run in `results` (--full-deck, run by hand): the wheel's rigid-rail
+    rows from its own modal step and patches, the (0,0) mode's fit, and the rim's lateral
+    velocity from the torque ramp's end (every 4th sample)."""
+    rows = creep_damping(contact_modes(os.path.join(results, "modes.exo"),
+                                       os.path.join(results, "modes_modes.csv")),
+                         *patch_semi_axes(results))
+    mode = zero_zero(rows)
+    t, v = rim_lateral_velocity(results)
+    sine = fitted_mode(t, v, mode["frequency_hz"], FULL_PULSE_START + PULSE_DURATION)
+    for key in ("frequency_hz", "damping_ratio", "rms"):
+        mode[f"fitted_coulomb_{key}"] = sine[key] if sine else float("nan")
+    for row in rows:
+        for key in mode:
+            row.setdefault(key, float("nan"))
+    keep = np.nonzero(t >= 0.006)[0][::4]
+    return rows, [{"time_s": t[k], "rim_lateral_velocity_m_per_s": v[k]} for k in keep]
+
+
 def plot():
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, 2, figsize=(15, 5.2))
+    full = os.path.exists(FULL_PULSE_CSV)  # the full-scale pulse run, where it was run
+    fig, axes = plt.subplots(1, 3 if full else 2, figsize=(22 if full else 15, 5.2))
+    if full:
+        full_pulse(axes[1])
+    chart = axes[-1]
     pulse = typed_rows(PULSE_CSV, [])
     demo = typed_rows(DEMO_CSV, ["family"])
     mode = zero_zero(demo)
@@ -242,38 +271,60 @@ def plot():
         rows = typed_rows(path, ["family"])
         for single, fill in ((True, "full"), (False, "none")):
             picked = [r for r in rows if (r["nodal_diameters"] == 0) == single]
-            axes[1].plot([r["frequency_hz"] for r in picked],
+            chart.plot([r["frequency_hz"] for r in picked],
                          [max(r["damping_ratio_rigid_rail"], 1e-4) for r in picked], marker,
                          fillstyle=fill, linestyle="none", color="C0" if single else "C1",
                          alpha=1 if path == FULL_CSV else 0.5,
                          label=f"{label}: " + ("n = 0 mode" if single else
                                                "pair's damped twin (the other: none)"))
         zz = zero_zero(rows)
-        axes[1].annotate(f"(0,0) {zz['frequency_hz']:.0f} Hz",
+        chart.annotate(f"(0,0) {zz['frequency_hz']:.0f} Hz",
                          (zz["frequency_hz"], zz["damping_ratio_rigid_rail"]),
                          textcoords="offset points", fontsize=8,
                          xytext=(-75, 8) if path == FULL_CSV else (8, -12))
     for name, colour in zip(RUNS, ("C0", "C3")):
-        axes[1].plot([mode[f"fitted_{name}_frequency_hz"]],
+        chart.plot([mode[f"fitted_{name}_frequency_hz"]],
                      [max(mode[f"fitted_{name}_damping_ratio"], 1e-4)], "*", markersize=14,
                      color=colour, label=f"demo FE, {name}: the fitted (0,0) sine "
                      "(zeta <= 0 drawn at 1e-4)")
-    axes[1].axhline(1 / math.sqrt(2), color="k", lw=0.8, linestyle="--")
-    axes[1].annotate("zeta = 0.71: no resonance peak", (60, 0.75), fontsize=8)
-    axes[1].set_xscale("log")
-    axes[1].set_yscale("log")
-    axes[1].set_ylim(1e-4, 10)
-    axes[1].set_xlabel("mode frequency (Hz)")
-    axes[1].set_ylabel("damping ratio")
-    axes[1].set_title("creep dashpots to a rigid rail (Kalker's linear theory; open and filled "
+    if full:
+        zz = zero_zero(typed_rows(FULL_CSV, ["family"]))
+        chart.plot([zz["fitted_coulomb_frequency_hz"]],
+                   [max(zz["fitted_coulomb_damping_ratio"], 1e-4)], "P", markersize=12,
+                   color="C0", label="full-scale FE, coulomb: the fitted (0,0) sine")
+    chart.axhline(1 / math.sqrt(2), color="k", lw=0.8, linestyle="--")
+    chart.annotate("zeta = 0.71: no resonance peak", (60, 0.75), fontsize=8)
+    chart.set_xscale("log")
+    chart.set_yscale("log")
+    chart.set_ylim(1e-4, 10)
+    chart.set_xlabel("mode frequency (Hz)")
+    chart.set_ylabel("damping ratio")
+    chart.set_title("creep dashpots to a rigid rail (Kalker's linear theory; open and filled "
                       "marks)\nagainst the rolling FE's (0,0) mode (stars): the rail is no "
                       "rigid wall", fontsize=10)
-    axes[1].grid(alpha=0.3, which="both")
-    axes[1].legend(fontsize=7, loc="lower left")
+    chart.grid(alpha=0.3, which="both")
+    chart.legend(fontsize=7, loc="lower left")
     fig.tight_layout()
     os.makedirs(os.path.dirname(PNG), exist_ok=True)
     fig.savefig(PNG, dpi=100)
     print(PNG)
+
+
+def full_pulse(axis):
+    """The full-scale pulse run's rim velocity, with its (0,0) fit in the title."""
+    pulse = typed_rows(FULL_PULSE_CSV, [])
+    mode = zero_zero(typed_rows(FULL_CSV, ["family"]))
+    axis.plot([1e3 * r["time_s"] for r in pulse],
+              [1e3 * r["rim_lateral_velocity_m_per_s"] for r in pulse], color="C0", lw=0.8,
+              label=f"coulomb (fit: {mode['fitted_coulomb_frequency_hz']:.0f} Hz, zeta "
+                    f"{mode['fitted_coulomb_damping_ratio']:.3f})")
+    axis.axvspan(1e3 * FULL_PULSE_START, 1e3 * (FULL_PULSE_START + PULSE_DURATION),
+                 color="grey", alpha=0.2, label=f"axle box pulse, {PULSE_AMPLITUDE * 1e6:g} um")
+    axis.set_xlabel("time (ms)")
+    axis.set_ylabel("rim point's lateral velocity (mm/s)")
+    axis.set_title(f"full scale, case 1 with the pulse after the torque ramp: the (0,0) mode "
+                   f"({mode['frequency_hz']:.0f} Hz clamped)", fontsize=10)
+    axis.legend(fontsize=8)
 
 
 def main():
@@ -283,8 +334,21 @@ def main():
     parser.add_argument("--patch", type=float, nargs=2, metavar=("A", "B"),
                         help="that run's patch semi-axes along and across the rail (m)")
     parser.add_argument("--run", action="store_true", help="the demo-scale pulse runs")
+    parser.add_argument("--full-deck", metavar="PATH",
+                        help="write the full-scale pulse deck (case 1, 19 ms; about 1.7 h on "
+                             "two ranks: mpirun -np 2 railfe PATH --output DIR)")
+    parser.add_argument("--full-results", metavar="DIR",
+                        help="that run's results: the full-scale wheel's rows and the fit")
     args = parser.parse_args()
+    if args.full_deck:
+        with open(args.full_deck, "w") as deck:
+            deck.write(pulse_deck("coulomb", FULL_OPTIONS, FULL_PULSE_START,
+                                  "rolling scene, case 1 at full scale"))
     if not args.replot:
+        if args.full_results:
+            rows, pulse = full_check(args.full_results)
+            write_rows(FULL_CSV, rows)
+            write_rows(FULL_PULSE_CSV, pulse)
         if args.modes:
             if not args.patch:
                 parser.error("--modes needs --patch A B")
