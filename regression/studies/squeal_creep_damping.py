@@ -54,7 +54,8 @@ sys.path[:0] = [HERE, os.path.join(ROOT, "regression", "charts"),
                 os.path.join(ROOT, "regression", "scenes")]
 import damped_sines  # noqa: E402
 import squeal_mesh_convergence as convergence  # noqa: E402
-from railfe_runs import csv_rows, run_deck, study_parser, typed_rows, write_rows  # noqa: E402
+from railfe_runs import csv_rows, run_or_reuse, study_parser, typed_rows, write_rows  # noqa: E402
+from make_squeal_decks import SPEED  # noqa: E402
 from wickens_critical_speed import kalker  # noqa: E402
 
 DATA = os.path.join(ROOT, "docs", "data")
@@ -63,7 +64,6 @@ DEMO_CSV = os.path.join(DATA, "squeal_creep_damping_demo.csv")
 PULSE_CSV = os.path.join(DATA, "squeal_creep_damping_pulse.csv")
 FULL_PULSE_CSV = os.path.join(DATA, "squeal_creep_damping_full_pulse.csv")
 PNG = os.path.join(ROOT, "docs", "img", "squeal_creep_damping.png")
-SPEED = 100 / 3.6  # m/s
 SHEAR_MODULUS = 210e9 / (2 * 1.3)  # Pa, the scene's steel
 # The pulse is long enough to leave the modes above 1 kHz nearly alone (its spectrum falls as
 # 1/f^3 beyond 2 / PULSE_DURATION) and short against the (0,0) mode's period; its largest
@@ -158,12 +158,7 @@ def run_pair(railfe, work):
     """Both pulse runs side by side: {name: results dir}. A run already in `work` from the same
     deck is read, not run again."""
     def one(name):
-        text, deck = pulse_deck(name), os.path.join(work, f"pulse_{name}.xml")
-        results = os.path.join(work, f"pulse_{name}_results")
-        if (os.path.exists(os.path.join(results, "summary.json")) and os.path.exists(deck)
-                and open(deck).read() == text):
-            return results
-        return run_deck(railfe, text, work, f"pulse_{name}")[0]
+        return run_or_reuse(railfe, pulse_deck(name), work, f"pulse_{name}")[0]
     with ThreadPoolExecutor(max_workers=2) as pool:
         return dict(zip(RUNS, pool.map(one, RUNS)))
 

@@ -31,7 +31,6 @@ reads runs already in --work; --exact recomputes the comparisons from the CSV al
     /usr/bin/python3 regression/studies/squeal_mesh_convergence.py [build/bin/railfe] \\
         [--sizes 2] [--no-free] [--reuse] [--exact] [--replot]
 """
-import json
 import math
 import os
 import sys
@@ -39,7 +38,7 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.join(HERE, "..", "..")
 sys.path[:0] = [HERE, os.path.join(ROOT, "regression", "scenes")]
-from railfe_runs import csv_rows, run_deck, step_section, study_parser, typed_rows, write_rows  # noqa: E402
+from railfe_runs import csv_rows, run_deck, run_or_reuse, step_section, study_parser, typed_rows, write_rows  # noqa: E402
 from squeal_simplifications import deck_text  # noqa: E402
 from make_squeal_decks import ROLLING_RADIUS, SPEED  # noqa: E402
 
@@ -191,14 +190,7 @@ def one_run(railfe, work, size, torque, variant=(), reuse=None):
     extra = ["--case", "1", "--kinematics"] + ([] if torque else ["--torque", "0"])
     name = f"zone_{size:g}mm" + ("" if torque else "_free")
     text = deck_text(options(size) + extra + list(variant))  # the last --case wins
-    results = os.path.join(work, name + "_results")
-    deck = os.path.join(work, name + ".xml")
-    reuse = REUSE if reuse is None else reuse
-    if (reuse and os.path.exists(os.path.join(results, "summary.json"))
-            and open(deck).read() == text):
-        with open(os.path.join(results, "summary.json")) as summary:
-            return results, json.load(summary)
-    return run_deck(railfe, text, work, name)
+    return run_or_reuse(railfe, text, work, name, REUSE if reuse is None else reuse)
 
 
 def measure(railfe, work, size, free):

@@ -35,7 +35,6 @@ one core of the shared machine (0.42 us per element-step):
     /usr/bin/python3 regression/studies/squeal_steady_creepage.py [build/bin/railfe] \\
         [--sizes 3] [--end-time 0.004] [--window 0.003 0.004] [--reuse] [--replot]
 """
-import json
 from concurrent.futures import ThreadPoolExecutor
 import math
 import os
@@ -45,7 +44,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.join(HERE, "..", "..")
 sys.path[:0] = [HERE, os.path.join(ROOT, "regression", "scenes")]
 import squeal_mesh_convergence as convergence  # noqa: E402
-from railfe_runs import (csv_rows, run_deck, step_section, study_parser, typed_rows,  # noqa: E402
+from railfe_runs import (csv_rows, run_deck, run_or_reuse, step_section, study_parser, typed_rows,  # noqa: E402
                          write_rows)
 from make_squeal_decks import ROLLING_RADIUS, SPEED, TORQUE  # noqa: E402
 
@@ -101,15 +100,9 @@ def run_pair(railfe, work, size, timeline, reuse):
             ([] if penalty == 1 else ["--penalty", f"{penalty:g}"]) +
             (["--penalty-stiffness", "bulk modulus, softer side"] if softer else []))))
 
-    def one(name, text):
-        results = os.path.join(work, name + "_results")
-        if (reuse and os.path.exists(os.path.join(results, "summary.json"))
-                and open(os.path.join(work, name + ".xml")).read() == text):
-            with open(os.path.join(results, "summary.json")) as summary:
-                return results, json.load(summary)
-        return run_deck(railfe, text, work, name)
     with ThreadPoolExecutor(max_workers=2) as pool:
-        return list(pool.map(lambda deck: one(*deck), decks))
+        return list(pool.map(lambda deck: run_or_reuse(railfe, deck[1], work, deck[0], reuse),
+                             decks))
 
 
 def free_name(size):

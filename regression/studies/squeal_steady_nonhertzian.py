@@ -127,18 +127,13 @@ def exact_references(railfe, work, label, fe):
         return [float(r["Fx_N"]) for r in csv_rows(path)]
 
     def calibrated(free, held):
-        """Fx held where the free scan carries the free twin's force (Fx falls with xi)."""
-        target = fe["free_longitudinal_force_N"]
-        k = next(k for k in range(len(free) - 1) if free[k] >= target >= free[k + 1])
-        t = (free[k] - target) / (free[k] - free[k + 1])
-        return (held[k] + t * (held[k + 1] - held[k]),
-                FREE_SCAN[k] + t * (FREE_SCAN[k + 1] - FREE_SCAN[k]))
+        """Fx held and xi(0) where the free scan carries the free twin's force."""
+        k, t = crossing(free, fe["free_longitudinal_force_N"])
+        return held[k] + t * (held[k + 1] - held[k]), between(FREE_SCAN, k, t)
+
     def matched(held):
         """The offset xi(0) at which the held scan carries the held run's own force."""
-        target = fe["longitudinal_force_N"]
-        k = next(k for k in range(len(held) - 1) if held[k] >= target >= held[k + 1])
-        t = (held[k] - target) / (held[k] - held[k + 1])
-        return FREE_SCAN[k] + t * (FREE_SCAN[k + 1] - FREE_SCAN[k])
+        return between(FREE_SCAN, *crossing(held, fe["longitudinal_force_N"]))
     reference, xi0 = calibrated(forces("free"), forces("held"))
     prediction, xi0_layer = calibrated(forces("free_layer"), forces("held_layer"))
     patch = summary["Step profiles (contact patch)"]
@@ -162,6 +157,18 @@ def exact_references(railfe, work, label, fe):
             "profiles_patch_b_m": patch["patch semi-axes from the pressure's moments, b [m]"],
             "profiles_max_pressure_Pa": patch["maximum pressure [Pa]"],
             "profiles_area_m2": patch["patch area [m2]"]}
+
+
+def crossing(scan, target):
+    """(k, t): `target` lies a share t of the way from scan[k] to scan[k + 1] (Fx falls along
+    FREE_SCAN's creepages)."""
+    k = next(k for k in range(len(scan) - 1) if scan[k] >= target >= scan[k + 1])
+    return k, (scan[k] - target) / (scan[k] - scan[k + 1])
+
+
+def between(values, k, t):
+    """values[k] moved a share t towards values[k + 1]."""
+    return values[k] + t * (values[k + 1] - values[k])
 
 
 def free_flexibility(label, fe):
