@@ -654,16 +654,25 @@ void ModalStep::run(StepContext& context) {
   if (n_failed > 0 && p.get<std::string>("On failed check") == "error") {
     // Name the parameter most likely at fault: unconverged modes want a longer or larger search,
     // failed checks of converged modes a tighter tolerance or a shift nearer to them.
+    // A missing doublet partner is no numerical failure: the model is not a body of revolution
+    // (a support off the axis, an uneven mesh), and tighter tolerances would not help.
+    const bool only_partners = std::all_of(records.begin(), records.end(), [](const auto& r) {
+      return r.status.rfind("failed", 0) != 0 || r.status == "failed: doublet partner missing";
+    });
     const std::string advice =
         !result.converged
             ? "the eigensolver stopped after Maximum restarts = " +
                   std::to_string(settings.maximum_restarts) +
                   ": raise Maximum restarts or Krylov blocks (0 = automatic), or move the Shift "
                   "nearer the wanted modes"
+        : only_partners
+            ? "each lacks a doublet partner within the Doublet tolerance: the model is not a "
+              "body of revolution (supports or mesh break the symmetry); raise the Doublet "
+              "tolerance if it should be one"
             : "lower Tolerance, or move the Shift nearer the failing modes";
     throw RunError(std::to_string(n_failed) + " of " + std::to_string(records.size()) +
                    " modes failed their checks (see the status column of " + context.step_name +
-                   "_modes.csv); " + advice +
+                   "_modes.csv.part, kept as written); " + advice +
                    ", or set On failed check = warn to keep the results");
   }
 }

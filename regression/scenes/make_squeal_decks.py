@@ -679,6 +679,13 @@ def main():
                 "rail_length", "end_time",
                 "mass_scaling", "start_x"):
         parser.add_argument("--" + key.replace("_", "-"), type=float)
+    parser.add_argument("--section-size", type=float,
+                        help="the rail section's element size away from its running surface "
+                             "(m; demo 0.02, full 0.01): how finely the head is meshed below the "
+                             "20 mm the head size grades over")
+    parser.add_argument("--wheel-size", type=float,
+                        help="the wheel's element size away from its tread (m; demo 0.06, "
+                             "full 0.03): the same for the rim")
     args = parser.parse_args()
     if args.case:
         p = dict(FULL if args.scale == "full" else DEMO)

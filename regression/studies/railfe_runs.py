@@ -174,15 +174,20 @@ def wheel_modal_deck(element_size, modes, band=None, block_size=4, export=False)
 """
 
 
-def study_parser(description, work, root):
+def study_parser(description, work, root, reuse=False):
     """The command line every study shares: the railfe binary (default build/bin/railfe under
-    `root`), --work (default `work`), --jobs and --replot."""
+    `root`), --work (default `work`), --jobs and --replot; with `reuse`, --reuse too (read the
+    runs already in --work from the same decks instead of running them again)."""
     parser = argparse.ArgumentParser(description=description)
     parser.add_argument("railfe", nargs="?", default=os.path.join(root, "build", "bin", "railfe"))
     parser.add_argument("--work", default=work)
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--replot", action="store_true",
                         help="redraw the chart from the CSV file without running railfe")
+    if reuse:
+        parser.add_argument("--reuse", action="store_true",
+                            help="read the runs already in --work (same decks) instead of "
+                                 "running them again")
     return parser
 
 

@@ -63,6 +63,9 @@ HOLD = None  # --hold XI: the held runs (make_squeal_decks.py --hold-creepage), 
 PENALTY = 1.0  # the held run's Penalty factor (squeal_steady_penalty.py); the free twin keeps 1
 SOFTER_SIDE = False  # the held run's Penalty stiffness "bulk modulus, softer side"
 FREE_LIKE_HELD = False  # the free twin at the held run's penalty settings instead of f = 1
+# --depth: the rail section's and the wheel's element sizes away from the running surfaces (mm),
+# where not the demo's 20 and 60 mm: how finely the bodies below the patch are meshed.
+DEPTH = None
 
 
 def held(path):
@@ -76,11 +79,23 @@ def penalty_suffix():
     return ("" if PENALTY == 1 else f"_f{PENALTY:g}") + ("_softer" if SOFTER_SIDE else "")
 
 
+def depth_suffix():
+    """The depth mesh's sizes in a run's name, where not the demo's."""
+    return "" if DEPTH is None else f"_depth{DEPTH[0]:g}-{DEPTH[1]:g}"
+
+
+def depth_options():
+    """The deck generator's options for the depth mesh (none: the demo's)."""
+    if DEPTH is None:
+        return []
+    return ["--section-size", f"{DEPTH[0] / 1000:g}", "--wheel-size", f"{DEPTH[1] / 1000:g}"]
+
+
 def held_name(size):
-    """The held run's name: its size, its penalty where not the default, and its held creepage
-    where not the steady studies' 0.8e-3."""
+    """The held run's name: its size, its penalty where not the default, its held creepage
+    where not the steady studies' 0.8e-3 and its depth mesh where not the demo's."""
     return (f"held_{size:g}mm" + penalty_suffix() +
-            ("" if HOLD in (None, 0.8e-3) else f"_xi{HOLD:g}"))
+            ("" if HOLD in (None, 0.8e-3) else f"_xi{HOLD:g}") + depth_suffix())
 
 
 def run_pair(railfe, work, size, timeline, reuse):
@@ -97,6 +112,7 @@ def run_pair(railfe, work, size, timeline, reuse):
         decks.append((name, convergence.deck_text(
             convergence.options(size) + ["--case", "1", "--kinematics", "--torque", "0",
                                          "--hold-creepage", repr(xi)] + timeline.variant() +
+            depth_options() +
             ([] if penalty == 1 else ["--penalty", f"{penalty:g}"]) +
             (["--penalty-stiffness", "bulk modulus, softer side"] if softer else []))))
 
@@ -109,7 +125,7 @@ def free_name(size):
     """The free twin's name: at f = 1 on the plain bulk modulus, or (FREE_LIKE_HELD) with the
     held run's penalty settings in its name."""
     return (f"held_{size:g}mm_free" +
-            (penalty_suffix() if FREE_LIKE_HELD else ""))
+            (penalty_suffix() if FREE_LIKE_HELD else "") + depth_suffix())
 
 
 class Timeline:

@@ -49,7 +49,9 @@ RUNS = [("squeal_steady_penalty.csv", 3, "3 mm f 30"),
         ("squeal_steady_penalty_2mm_4ms_matched.csv", 0, "2 mm f 10 softer, twin f 10 softer"),
         ("squeal_steady_penalty_3mm_4ms_matched.csv", 0, "3 mm f 10 softer to 4 ms, twin alike"),
         ("squeal_steady_penalty_3mm_4ms_xi0.0004.csv", 0, "the same held at xi 0.4e-3"),
-        ("squeal_steady_penalty_3mm_4ms_xi0.0016.csv", 0, "the same held at xi 1.6e-3")]
+        ("squeal_steady_penalty_3mm_4ms_xi0.0016.csv", 0, "the same held at xi 1.6e-3"),
+        ("squeal_steady_penalty_3mm_4ms_depth8-15.csv", 0,
+         "3 mm to 4 ms, rail head and rim meshed finer below (8, 15 mm)")]
 # The 3 mm pair held at three creepages, one free twin: the creep curve's points.
 SWEEP = ("the same held at xi 0.4e-3", "3 mm f 10 softer to 4 ms, twin alike",
          "the same held at xi 1.6e-3")
@@ -237,7 +239,8 @@ def plot(rows):
     axes[2].set_title("held steady case 1, xi 0.8e-3 unless named, 113.5 kN\n(the free twins' forces, in the "
                       f"legend's order: {twins} N)", fontsize=10)
     axes[2].grid(axis="y", alpha=0.3)
-    axes[2].legend(fontsize=8)
+    axes[2].set_ylim(bottom=min(axes[2].get_ylim()[0], -45))
+    axes[2].legend(fontsize=7, loc="lower right")
     creep_curve(axes[3], rows)
     fig.tight_layout()
     os.makedirs(os.path.dirname(PNG), exist_ok=True)

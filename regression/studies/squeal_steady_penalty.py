@@ -36,6 +36,10 @@ side at f = 10, held to 4 ms with the window 3-4 ms, as
 and the same with its free twin at the held run's penalty settings (--free-like-held: the free
 twin's own r is then railfe's report, not an estimate scaled from 3 mm):
     ... --name 2mm_4ms_matched --free-like-held
+The bodies below the contact meshed finer than the demo's 20 mm (rail section) and 60 mm (wheel)
+(--depth SECTION WHEEL, mm; both runs of the pair get it and their names _depthS-W):
+    ... --size 3 --end-time 4e-3 --window 3e-3 4e-3 --free-like-held --depth 8 15 \\
+        --name 3mm_4ms_depth8-15
 A held creepage other than 0.8e-3 (--hold; the free twin is the same run, reused with --reuse
 from a --work that holds it): the creep curve's points, as
     ... --size 3 --end-time 4e-3 --window 3e-3 4e-3 --free-like-held --hold 0.0004 \\
@@ -240,11 +244,15 @@ def main():
                              "at f = 1 on the plain bulk modulus")
     parser.add_argument("--hold", type=float, default=HOLD,
                         help="the held run's creepage (the free twin's is 0 whatever it is)")
+    parser.add_argument("--depth", type=float, nargs=2, metavar=("SECTION", "WHEEL"),
+                        help="the rail section's and the wheel's element sizes away from the "
+                             "running surfaces (mm; the demo's: 20 60), both runs of the pair")
     args = parser.parse_args()
     global CSV, HISTORIES, PNG
     CSV, HISTORIES, PNG = outputs(args.name)
     if not args.replot:
         steady.HOLD, steady.FREE_LIKE_HELD = args.hold, args.free_like_held
+        steady.DEPTH = args.depth
         timeline = steady.Timeline(args.end_time, args.window)
         rows, columns = [], {}
         runs = [(f, False) for f in args.penalties] + [(f, True) for f in args.softer]
