@@ -131,14 +131,15 @@ def creep_damping(rows, a, b):
 
 
 def pulse_deck(friction, options=DECK_OPTIONS, start=PULSE_START, scene="demo wheel in free "
-               "rolling"):
+               "rolling", duration=PULSE_DURATION, amplitude=PULSE_AMPLITUDE):
     """The deck `options` make (the demo in free rolling unless given) with the axle box's
-    lateral pulse from `start` instead of its lateral motion, with Coulomb friction or none."""
+    lateral pulse (a raised cosine of `amplitude` over `duration`) from `start` instead of its
+    lateral motion, with Coulomb friction or none."""
     command = [sys.executable, os.path.join(ROOT, "regression", "scenes", "make_squeal_decks.py")]
     text = subprocess.run(command + options, check=True, capture_output=True, text=True).stdout
-    pulse = (f"t &lt; {start:g} ? 0 : (t &lt; {start + PULSE_DURATION:g} ? "
-             f"{PULSE_AMPLITUDE / 2:g}*(1 - cos(2*_pi*(t - {start:g})/"
-             f"{PULSE_DURATION:g})) : 0)")
+    pulse = (f"t &lt; {start:g} ? 0 : (t &lt; {start + duration:g} ? "
+             f"{amplitude / 2:g}*(1 - cos(2*_pi*(t - {start:g})/"
+             f"{duration:g})) : 0)")
     text, count = re.subn(r'(name="Motion y" type="string" value=")[^"]*"',
                           lambda m: m.group(1) + pulse + '"', text)
     assert count == 1, "the deck's lateral motion was not found"
