@@ -28,7 +28,7 @@ Writes docs/data/squeal_rim_visibility.csv (a row per rim point: its angle, the 
 visibility of n = 3 and the spectrum's peak), docs/data/squeal_rim_visibility_modes.csv (a row per
 named mode: its free frequency and the sine fitted to its pattern), their _full twins with
 --full, and docs/img/squeal_rim_visibility.png. The demo takes about 8 min on one core, the full
-scale about 40 min on two:
+scale about 50 min on two (49 min here):
 
     /usr/bin/python3 regression/studies/squeal_rim_visibility.py [build/bin/railfe] [--full]
         [--reuse] [--replot]
@@ -55,7 +55,7 @@ PNG = os.path.join(ROOT, "docs", "img", "squeal_rim_visibility.png")
 START, DURATION, AMPLITUDE = 1.0e-3, 4.0e-4, 1.0e-5  # s, s, m: broadband to 2 / DURATION
 END_TIME = 0.010  # s: about 9 periods of a 1 kHz mode after the pulse
 # --full: case 3's full-scale deck in free rolling to FULL_END_TIME, its solution zone (and the
-# wheel's refined arc) moved to where the wheel rolls in that time; two ranks, about 40 min.
+# wheel's refined arc) moved to where the wheel rolls in that time; two ranks, about 50 min.
 FULL_END_TIME = 0.006  # s
 FULL_OPTIONS = ["--case", "3", "--torque", "0", "--end-time", f"{FULL_END_TIME:g}",
                 "--approach-size", "0", "--zone-start", "-0.01", "--zone-end", "0.18",
@@ -295,7 +295,7 @@ def main():
     parser = study_parser(__doc__.split("\n")[0], "/tmp/railfe_squeal_rim_visibility", ROOT,
                           reuse=True)
     parser.add_argument("--full", action="store_true",
-                        help="the full-scale case instead of the demo (two ranks, about 40 min)")
+                        help="the full-scale case instead of the demo (two ranks, about 50 min)")
     args = parser.parse_args()
     if not args.replot:
         text, name = deck_text(args.full), "pulse_full" if args.full else "pulse"
