@@ -335,7 +335,8 @@ def deck(case, p, sleepers=True):
             block("all", p_("Box", "Array(double)", "{-1, 1, -1, 1, -1, 1}"), 0),
             block("rim point", p_("Point", "Array(double)", fmt(rim)), 0)] + ([
             block("hub cylinder", p_("Cylinder", "Array(double)",
-                                     fmt([0, 0, 0, 0, 1, 0, HOLD_RADIUS])), 0),
+                                     fmt([0, 0, 0, 0, 1, 0,
+                                          p.get("hold_radius") or HOLD_RADIUS])), 0),
             block("hub", p_("Box", "Array(double)", fmt([-1, 1, *HOLD_HUB, -1, 1])) + "\n" +
                   p_("Within", "string", "hub cylinder"), 0)]
             if hold is not None else []) + ([
@@ -664,6 +665,9 @@ def main():
                         help="the steady-state check: the axle box carries hub and web at the "
                              "rolling speed and spins them at (1 + this) x free rolling, with no "
                              "torque (give --torque 0 too)")
+    parser.add_argument("--hold-radius", type=float,
+                        help="with --hold-creepage: the axle box carries the wheel inside this "
+                             "radius (m; default 0.385, the rim's inner surface is at 0.395)")
     parser.add_argument("--penalty", type=float,
                         help="the contact's Penalty factor in the roll step (default 1)")
     parser.add_argument("--penalty-stiffness", choices=["bulk modulus",
@@ -691,7 +695,7 @@ def main():
         p = dict(FULL if args.scale == "full" else DEMO)
         for key in list(p) + ["sleepers", "modes", "torque", "kinematics", "approach_size",
                               "transitions", "penalty", "penalty_stiffness",
-                              "contact_mass_scaling", "hold_creepage"]:
+                              "contact_mass_scaling", "hold_creepage", "hold_radius"]:
             value = getattr(args, key, None)
             if value is not None:
                 p[key] = value

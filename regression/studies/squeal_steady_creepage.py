@@ -66,6 +66,7 @@ FREE_LIKE_HELD = False  # the free twin at the held run's penalty settings inste
 # --depth: the rail section's and the wheel's element sizes away from the running surfaces (mm),
 # where not the demo's 20 and 60 mm: how finely the bodies below the patch are meshed.
 DEPTH = None
+HUB = None  # --hub R: the held hub's radius (m), where not the generator's 0.385
 
 
 def held(path):
@@ -80,15 +81,16 @@ def penalty_suffix():
 
 
 def depth_suffix():
-    """The depth mesh's sizes in a run's name, where not the demo's."""
-    return "" if DEPTH is None else f"_depth{DEPTH[0]:g}-{DEPTH[1]:g}"
+    """The depth mesh's sizes and the held hub's radius in a run's name, where not the demo's."""
+    return (("" if DEPTH is None else f"_depth{DEPTH[0]:g}-{DEPTH[1]:g}") +
+            ("" if HUB is None else f"_hub{HUB:g}"))
 
 
 def depth_options():
-    """The deck generator's options for the depth mesh (none: the demo's)."""
-    if DEPTH is None:
-        return []
-    return ["--section-size", f"{DEPTH[0] / 1000:g}", "--wheel-size", f"{DEPTH[1] / 1000:g}"]
+    """The deck generator's options for the depth mesh and the held hub (none: the demo's)."""
+    return (([] if DEPTH is None else ["--section-size", f"{DEPTH[0] / 1000:g}",
+                                       "--wheel-size", f"{DEPTH[1] / 1000:g}"]) +
+            ([] if HUB is None else ["--hold-radius", f"{HUB:g}"]))
 
 
 def held_name(size):

@@ -51,7 +51,9 @@ RUNS = [("squeal_steady_penalty.csv", 3, "3 mm f 30"),
         ("squeal_steady_penalty_3mm_4ms_xi0.0004.csv", 0, "the same held at xi 0.4e-3"),
         ("squeal_steady_penalty_3mm_4ms_xi0.0016.csv", 0, "the same held at xi 1.6e-3"),
         ("squeal_steady_penalty_3mm_4ms_depth8-15.csv", 0,
-         "3 mm to 4 ms, rail head and rim meshed finer below (8, 15 mm)")]
+         "3 mm to 4 ms, rail head and rim meshed finer below (8, 15 mm)"),
+        ("squeal_steady_penalty_3mm_4ms_hub0.25.csv", 0,
+         "3 mm to 4 ms, the hub held inside 250 mm instead of 385 mm")]
 # The 3 mm pair held at three creepages, one free twin: the creep curve's points.
 SWEEP = ("the same held at xi 0.4e-3", "3 mm f 10 softer to 4 ms, twin alike",
          "the same held at xi 1.6e-3")

@@ -40,6 +40,9 @@ The bodies below the contact meshed finer than the demo's 20 mm (rail section) a
 (--depth SECTION WHEEL, mm; both runs of the pair get it and their names _depthS-W):
     ... --size 3 --end-time 4e-3 --window 3e-3 4e-3 --free-like-held --depth 8 15 \\
         --name 3mm_4ms_depth8-15
+The hub held inside a smaller radius than the generator's 0.385 m (--hub R, m; names _hubR):
+    ... --size 3 --end-time 4e-3 --window 3e-3 4e-3 --free-like-held --hub 0.25 \\
+        --name 3mm_4ms_hub0.25
 A held creepage other than 0.8e-3 (--hold; the free twin is the same run, reused with --reuse
 from a --work that holds it): the creep curve's points, as
     ... --size 3 --end-time 4e-3 --window 3e-3 4e-3 --free-like-held --hold 0.0004 \\
@@ -247,12 +250,14 @@ def main():
     parser.add_argument("--depth", type=float, nargs=2, metavar=("SECTION", "WHEEL"),
                         help="the rail section's and the wheel's element sizes away from the "
                              "running surfaces (mm; the demo's: 20 60), both runs of the pair")
+    parser.add_argument("--hub", type=float,
+                        help="the held hub's radius (m; the generator's 0.385), both runs")
     args = parser.parse_args()
     global CSV, HISTORIES, PNG
     CSV, HISTORIES, PNG = outputs(args.name)
     if not args.replot:
         steady.HOLD, steady.FREE_LIKE_HELD = args.hold, args.free_like_held
-        steady.DEPTH = args.depth
+        steady.DEPTH, steady.HUB = args.depth, args.hub
         timeline = steady.Timeline(args.end_time, args.window)
         rows, columns = [], {}
         runs = [(f, False) for f in args.penalties] + [(f, True) for f in args.softer]
