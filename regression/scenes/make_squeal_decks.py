@@ -691,6 +691,8 @@ def main():
                         help="the wheel's element size away from its tread (m; demo 0.06, "
                              "full 0.03): the same for the rim")
     args = parser.parse_args()
+    if args.hold_radius is not None and (args.hold_creepage is None or args.hold_radius <= 0):
+        parser.error("--hold-radius needs --hold-creepage and a radius > 0 (m)")
     if args.case:
         p = dict(FULL if args.scale == "full" else DEMO)
         for key in list(p) + ["sleepers", "modes", "torque", "kinematics", "approach_size",

@@ -109,16 +109,16 @@ def run_deck(railfe, deck_text, workdir, name, ranks=1):
         return results, json.load(summary)
 
 
-def run_or_reuse(railfe, deck_text, workdir, name, reuse=True):
-    """run_deck, or (with `reuse`) the run already in workdir from the same deck text: its
-    results dir and summary, read instead of run again."""
+def run_or_reuse(railfe, deck_text, workdir, name, reuse=True, ranks=1):
+    """run_deck (on `ranks` ranks), or (with `reuse`) the run already in workdir from the same
+    deck text: its results dir and summary, read instead of run again."""
     deck = os.path.join(workdir, name + ".xml")
     results = os.path.join(workdir, name + "_results")
     if (reuse and os.path.exists(os.path.join(results, "summary.json"))
             and os.path.exists(deck) and open(deck).read() == deck_text):
         with open(os.path.join(results, "summary.json")) as summary:
             return results, json.load(summary)
-    return run_deck(railfe, deck_text, workdir, name)
+    return run_deck(railfe, deck_text, workdir, name, ranks)
 
 
 def csv_rows(path):

@@ -39,14 +39,14 @@ import re
 import sys
 
 import numpy as np
-from scipy.io import netcdf_file
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.join(HERE, "..", "..")
 sys.path[:0] = [HERE, os.path.join(ROOT, "regression", "charts"),
                 os.path.join(ROOT, "regression", "scenes")]
 import damped_sines  # noqa: E402
-from railfe_runs import csv_rows, run_deck, study_parser, typed_rows, write_rows  # noqa: E402
+from railfe_runs import csv_rows, run_or_reuse, study_parser, typed_rows, write_rows  # noqa: E402
+from rim_vibration import node_set_positions  # noqa: E402
 from make_squeal_decks import ROLLING_RADIUS, SPEED  # noqa: E402
 from squeal_creep_damping import DECK_OPTIONS, pulse_deck  # noqa: E402
 
@@ -136,16 +136,11 @@ def rim_angles(results, deck):
     railfe picked for it (preload.exo) and the wheel's axis (the modal step's Axis origin)."""
     origin = [float(v) for v in re.search(r'name="Axis origin" type="Array\(double\)" '
                                           r'value="\{([^}]*)\}"', deck).group(1).split(",")]
-    data = netcdf_file(os.path.join(results, "preload.exo"), "r", mmap=False)
-    v = data.variables
-    names = ["".join(c.decode() for c in row if c != b"").strip() for row in v["ns_names"][:]]
     angles = []
     for angle in ANGLES:
-        node = int(v[f"node_ns{names.index(f'wheel.rim {angle}') + 1}"][0]) - 1
-        dx, dz = (float(v[f"coord{c}"][node]) - origin[k] for k, c in ((0, "x"), (2, "z")))
-        angle = math.degrees(math.atan2(dx, -dz)) - rotation_at_centre()
-        angles.append((angle + 180) % 360 - 180)
-    data.close()
+        x, _, z = node_set_positions(os.path.join(results, "preload.exo"), f"wheel.rim {angle}")[0]
+        turned = math.degrees(math.atan2(x - origin[0], origin[2] - z)) - rotation_at_centre()
+        angles.append((turned + 180) % 360 - 180)
     return np.array(angles)
 
 
@@ -181,8 +176,8 @@ def fits(results, deck):
     basis = np.stack([np.cos(n * theta) for n in SPATIAL], axis=1)
     condition = float(np.linalg.cond(basis))
     patterns = np.linalg.lstsq(basis, velocity, rcond=None)[0]  # SPATIAL x time
-    f, pattern_spectra = spectrum(patterns[0], dt)
-    pattern_spectra = np.array([spectrum(p, dt)[1] for p in patterns])
+    spectra_of = [spectrum(p, dt) for p in patterns]
+    f, pattern_spectra = spectra_of[0][0], np.array([values for _, values in spectra_of])
     table = []
     for key, label, _, diameters, _ in MODES:
         pattern = SPATIAL.index(diameters)
@@ -298,12 +293,9 @@ def main():
                         help="the full-scale case instead of the demo (two ranks, about 50 min)")
     args = parser.parse_args()
     if not args.replot:
-        text, name = deck_text(args.full), "pulse_full" if args.full else "pulse"
-        deck = os.path.join(args.work, name + ".xml")
-        if args.reuse and os.path.exists(deck) and open(deck).read() == text:
-            results = os.path.join(args.work, name + "_results")
-        else:
-            results = run_deck(args.railfe, text, args.work, name, ranks=2 if args.full else 1)[0]
+        text = deck_text(args.full)
+        results = run_or_reuse(args.railfe, text, args.work, "pulse_full" if args.full else
+                               "pulse", args.reuse, ranks=2 if args.full else 1)[0]
         for path, rows in zip(outputs(args.full), fits(results, text)):
             write_rows(path, rows)
     plot()
