@@ -656,9 +656,10 @@ void ModalStep::run(StepContext& context) {
     // failed checks of converged modes a tighter tolerance or a shift nearer to them.
     // A missing doublet partner is no numerical failure: the model is not a body of revolution
     // (a support off the axis, an uneven mesh), and tighter tolerances would not help.
-    const bool only_partners = std::all_of(records.begin(), records.end(), [](const auto& r) {
-      return r.status.rfind("failed", 0) != 0 || r.status == "failed: doublet partner missing";
+    const auto partner_failures = std::count_if(records.begin(), records.end(), [](const auto& r) {
+      return r.status == "failed: doublet partner missing";
     });
+    const bool only_partners = partner_failures == n_failed;  // not a Sturm count or a missing mode
     const std::string advice =
         !result.converged
             ? "the eigensolver stopped after Maximum restarts = " +
