@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Writes the squeal rolling scene's decks (issue 16): inputs/scenes/squeal_case1..5.xml at full
 scale, inputs/scenes/squeal_demo.xml (case 3, coarse, about a minute) and, for the studies, any
-variant (mesh size, track length, sleepers, end time) with --variant options.
+variant (mesh size, track length, sleepers, end time) with --variant options. Also the steady
+check's cylindrical tread, inputs/profiles/cylindrical_tread.prw (--tread cylinder).
 
 One model, every deck: an S1002 wheel (920 mm) with half its axle on a 54E1 rail inclined 1:40
 on rail pads, sleepers (point masses) and ballast; a statics preload under gravity and the sprung
@@ -67,6 +68,19 @@ HOLD_INERTIA = 1.0e6  # kg m^2
 # tilt from the axle's bending that a rigid start would snap out (2.9e-3 rad, 1.3 mm at the tread).
 HOLD_HUB = (-0.071, 0.111)  # m
 
+# The steady check's control (--tread cylinder): a tread without conicity at the running circle
+# (the S1002 file's flange kept, lowered to meet it: cylinder_profile_text) on the rail upright
+# and centred under it. The contact is then Hertz's on the crown's R300, with no spin and no
+# change of rolling radius across the patch, so the half-space reference is not in doubt.
+CYLINDER_PROFILE = os.path.join(HERE, "..", "..", "inputs", "profiles", "cylindrical_tread.prw")
+CYLINDER_FLAT_TO = 0.02  # m: the tread is flat up to here towards the flange
+TREADS = {
+    "S1002": {"rolling_radius": ROLLING_RADIUS, "rail_offset": RAIL_OFFSET,
+              "inclination": INCLINATION, "axis_height": AXIS_HEIGHT},
+    "cylinder": {"rolling_radius": WHEEL_RADIUS, "rail_offset": 0.0, "inclination": 0.0,
+                 "axis_height": WHEEL_RADIUS - 2e-5},  # the same 20 um first penetration
+}
+
 FULL = {
     "title": "full scale",
     "rail_length": 2.4, "start_x": 0.7, "zone": (0.39, 0.54),
@@ -115,6 +129,34 @@ COULOMB_FRICTION = 0.45
 FALLING_FRICTION = (0.5, 0.32, 6.0)
 
 
+def geometry(p):
+    """The wheel's and rail's placement for the deck's tread (TREADS)."""
+    return TREADS[p.get("tread", "S1002")]
+
+
+def cylinder_profile_text():
+    """The cylindrical tread as a SIMPACK wheel profile (mm): flat at the running circle from
+    the field side to CYLINDER_FLAT_TO, then the S1002 file's points lowered and tilted so that
+    height and slope meet the flat there (the flange's tip about 5 mm lower, still the highest
+    point, far from the rail)."""
+    sys.path.insert(0, HERE)
+    import squeal_placement
+    points = squeal_placement.wheel_profile()
+    y1, dy = CYLINDER_FLAT_TO, 1e-4
+    z1 = squeal_placement.interpolate(points, y1)
+    slope = (squeal_placement.interpolate(points, y1 + dy) - z1) / dy
+    flat = [(points[0][0] + k * (y1 - points[0][0]) / 40, 0.0) for k in range(40)]
+    flange = [(y, z - z1 - slope * (y - y1)) for y, z in points if y >= y1]
+    lines = ["! A cylindrical tread with the S1002 flange: written by",
+             "! regression/scenes/make_squeal_decks.py (the steady check's control, --tread",
+             "! cylinder) from MBench_S1002_v3.prw; y lateral (flange on +y), z radially out, mm.",
+             "  header.begin", "    version = 1", "    type    = 1", "  header.end",
+             "  spline.begin", "    units.len.f = 1000.", "    units.ang.f = 1.", "    point.begin"]
+    lines += [f"      {1e3 * y:.6f} {1e3 * z:.6f}" for y, z in flat + flange]
+    lines += ["    point.end", "  spline.end"]
+    return "\n".join(lines) + "\n"
+
+
 def falling_friction(case):
     """(mu_s, mu_d, decay) if \p case has falling friction, None if Coulomb."""
     return FALLING_FRICTION if case == 5 else None
@@ -142,7 +184,7 @@ def lateral_motion(case, p):
             f"{v:.6g}*(t - {t1 + tr / 2:g}))")
 
 
-def track_springs(seats, sleepers, bodies):
+def track_springs(seats, sleepers, bodies, rail_offset):
     """The explicit step's rail supports. "springs": each seat's nodes on pad and ballast in
     series to the ground, as the statics preload has them (the sleepers' mass left out), so the
     run starts in balance. "bodies": a sleeper point mass under each seat, the pad between them
@@ -181,7 +223,7 @@ def track_springs(seats, sleepers, bodies):
                 p_("Damping", "Array(double)", fmt([0, 0, BALLAST["damping"]]))]), 0))
             continue
         bodies.append(block(name, "\n".join([
-            p_("Reference point", "Array(double)", fmt([x, RAIL_OFFSET, -0.25])),
+            p_("Reference point", "Array(double)", fmt([x, rail_offset, -0.25])),
             p_("Mass", "double", f"{SLEEPER_MASS:g}"), p_("Fixed translations", "string", "xy"),
             p_("Weight", "bool", "false")]), 0))
         springs.append(block(f"pad {k + 1}", "\n".join([
@@ -195,13 +237,13 @@ def track_springs(seats, sleepers, bodies):
     return springs
 
 
-def sleeper_parts(seats):
+def sleeper_parts(seats, rail_offset):
     """The sleepers as box parts under the seats (--sleepers solids), and their blocks."""
     lx, ly, lz = SLEEPER_BOX["lengths"]
     parts = [block(f"sleeper {k + 1}", "\n".join([
         p_("Type", "string", "box"),
         block("Box", "\n".join([
-            p_("Origin", "Array(double)", fmt([x - lx / 2, RAIL_OFFSET - SLEEPER_BOX["field_side"],
+            p_("Origin", "Array(double)", fmt([x - lx / 2, rail_offset - SLEEPER_BOX["field_side"],
                                                SLEEPER_BOX["top"] - lz])),
             p_("Lengths", "Array(double)", fmt([lx, ly, lz])),
             p_("Elements", "Array(int)", "{%d, %d, %d}" % SLEEPER_BOX["elements"]),
@@ -209,7 +251,7 @@ def sleeper_parts(seats):
     return parts, [f"sleeper {k + 1}.sleeper" for k in range(len(seats))]
 
 
-def wheel_modes(x0):
+def wheel_modes(x0, axis_height):
     """The modal step of the wheel and half axle alone (the rail left out), clamped at the axle
     end as the axle box holds it: the modes the rim's spectra are matched to (the seed's Table
     4), from the very mesh that rolls. The refined arc breaks the wheel's symmetry, so doublets
@@ -221,7 +263,7 @@ def wheel_modes(x0):
         p_("Doublet tolerance", "double", "2e-2"),
         block("Supports", block("axle box", p_("Node set", "string", "wheel.axle_end"), 0), 0),
         block("Classification", p_("Axisymmetric", "bool", "true") + "\n" +
-              p_("Axis origin", "Array(double)", fmt([x0, 0, AXIS_HEIGHT])), 0)])
+              p_("Axis origin", "Array(double)", fmt([x0, 0, axis_height])), 0)])
 
 
 def refined_arc(p):
@@ -232,15 +274,16 @@ def refined_arc(p):
     The arc's ends are whole slices away from 270, so that a slice boundary, and the nodes the
     preload rests on, lie on the lowest point."""
     slice_deg = math.degrees(p["arc_size"] / WHEEL_RADIUS)
-    margin = math.degrees(0.012 / ROLLING_RADIUS)
+    r0 = geometry(p)["rolling_radius"]
+    margin = math.degrees(0.012 / r0)
     if p.get("approach_size"):
         # Only what rolls through the zone, entered LEAD_IN (2 ms) before it so that the change
         # from the approach's slices has passed (docs/verification.md#squeal-scene);
         # approach_arc() leads to it.
-        return (270 + math.degrees((p["zone"][0] - LEAD_IN) / ROLLING_RADIUS) - margin,
-                270 + math.degrees(p["zone"][1] / ROLLING_RADIUS) + margin)
-    before = min(0.0, math.degrees(p["zone"][0] / ROLLING_RADIUS)) - margin
-    after = math.degrees(p["zone"][1] / ROLLING_RADIUS) + margin
+        return (270 + math.degrees((p["zone"][0] - LEAD_IN) / r0) - margin,
+                270 + math.degrees(p["zone"][1] / r0) + margin)
+    before = min(0.0, math.degrees(p["zone"][0] / r0)) - margin
+    after = math.degrees(p["zone"][1] / r0) + margin
     start = 270 - math.ceil(-before / slice_deg) * slice_deg
     count = math.ceil((270 + after - start) / slice_deg)
     return (start, start + count * slice_deg)
@@ -253,7 +296,7 @@ def approach_arc(p, arc):
     which halves the wheel's elements. None without."""
     if not p.get("approach_size"):
         return None
-    return (270 - math.degrees(0.012 / ROLLING_RADIUS), arc[1])
+    return (270 - math.degrees(0.012 / geometry(p)["rolling_radius"]), arc[1])
 
 
 def tread_box(arc):
@@ -289,7 +332,8 @@ def block(name, body, indent):
 def deck(case, p, sleepers=True):
     x0 = p["start_x"]
     zone = (x0 + p["zone"][0], x0 + p["zone"][1])
-    omega = SPEED / ROLLING_RADIUS
+    place = geometry(p)
+    omega = SPEED / place["rolling_radius"]
     arc = refined_arc(p)
     approach = approach_arc(p, arc)
     seats = sleeper_positions(p["rail_length"])
@@ -316,13 +360,15 @@ def deck(case, p, sleepers=True):
             p_("Head element size", "double", p["head_size"]),
             p_("Section element size", "double", p["section_size"])]), 0),
         p_("Rotation axis", "Array(double)", "{1, 0, 0}"),
-        p_("Rotation angle", "double", f"{INCLINATION:.16g}"),
-        p_("Translation", "Array(double)", fmt([0, RAIL_OFFSET, 0]))])
-    rim = (ROLLING_RADIUS - 0.03, -0.06, 0.0)  # field-side rim face, ahead of the axle
+        p_("Rotation angle", "double", f"{place['inclination']:.16g}"),
+        p_("Translation", "Array(double)", fmt([0, place["rail_offset"], 0]))])
+    rim = (place["rolling_radius"] - 0.03, -0.06, 0.0)  # field-side rim face, ahead of the axle
     wheel = "\n".join([
         p_("Type", "string", "wheel"),
         block("Wheel", "\n".join([
-            p_("Half axle", "bool", "true"), p_("Element size", "double", p["wheel_size"]),
+            p_("Half axle", "bool", "true"), p_("Element size", "double", p["wheel_size"])] + ([
+            p_("Profile file", "string", os.path.abspath(CYLINDER_PROFILE))]
+            if p.get("tread") == "cylinder" else []) + [
             p_("Tread element size", "double", p["tread_size"]),
             p_("Refined arc", "Array(double)", "{%.15g, %.15g}" % arc),
             p_("Arc element size", "double", p["arc_size"])] + ([
@@ -345,9 +391,10 @@ def deck(case, p, sleepers=True):
         block("Side sets", block("rolling tread", p_("Box", "Array(double)", fmt(
             tread_box((approach or arc)[:1] + arc[1:]))) + "\n" +
             p_("Within", "string", "tread"), 0), 0),
-        p_("Translation", "Array(double)", fmt([x0, 0, AXIS_HEIGHT]))])
+        p_("Translation", "Array(double)", fmt([x0, 0, place["axis_height"]]))])
     solid_sleepers = p.get("sleepers") == "solids"
-    sleepers, sleeper_blocks = sleeper_parts(seats) if solid_sleepers else ([], [])
+    sleepers, sleeper_blocks = (sleeper_parts(seats, place["rail_offset"]) if solid_sleepers
+                                else ([], []))
     mesh = "\n".join([
         p_("Type", "string", "parts"),
         block("Parts", "\n".join([block("rail", rail, 0), block("wheel", wheel, 0)] + sleepers),
@@ -411,7 +458,7 @@ def deck(case, p, sleepers=True):
         block("Centrifugal loads", block("rolling wheel", "\n".join([
             p_("Node set", "string", "wheel.all"),
             p_("Angular velocity", "Array(double)", fmt([0, omega, 0])),
-            p_("Axis point", "Array(double)", fmt([x0, 0, AXIS_HEIGHT]))]), 0), 0),
+            p_("Axis point", "Array(double)", fmt([x0, 0, place["axis_height"]]))]), 0), 0),
         block("Springs", static_springs, 0),
         block("Contact pairs", block("wheel-rail", contact_common, 0), 0)])
     axle_box = [p_("Node set", "string", "wheel.axle_end"),
@@ -423,7 +470,7 @@ def deck(case, p, sleepers=True):
         # axle beyond the hub) at the rolling speed and, through a flywheel's inertia, a
         # constant spin.
         axle_box = [p_("Node set", "string", carried),
-                    p_("Reference point", "Array(double)", fmt([x0, 0, AXIS_HEIGHT])),
+                    p_("Reference point", "Array(double)", fmt([x0, 0, place["axis_height"]])),
                     p_("Inertia", "Array(double)", fmt([0, HOLD_INERTIA, 0])),
                     p_("Angular velocity", "Array(double)", fmt([0, spin, 0])),
                     p_("Motion x", "string", f"{SPEED!r} * t"),
@@ -440,7 +487,7 @@ def deck(case, p, sleepers=True):
         p_("End A", "string", "axle box"), p_("End B", "string", "sprung mass"),
         p_("Stiffness", "Array(double)", "{1e7, 0, 1.15e6}"),
         p_("Damping", "Array(double)", "{1e4, 0, 2.5e3}")]), 0)]
-    springs += track_springs(seats, p.get("sleepers", "springs"), bodies)
+    springs += track_springs(seats, p.get("sleepers", "springs"), bodies, place["rail_offset"])
     histories = [block(n, p_("Node set", "string", "wheel.rim point") + "\n" +
                        p_("Quantity", "string", "velocity") + "\n" + p_("Component", "string", c), 0)
                  for n, c in (("rim vx", "x"), ("rim vy", "y"), ("rim vz", "z"))]
@@ -475,7 +522,7 @@ def deck(case, p, sleepers=True):
             p_("Node set", "string", "wheel.all"),
             p_("Translation", "Array(double)", fmt([SPEED, 0, 0])),
             p_("Angular velocity", "Array(double)", fmt([0, spin, 0])),
-            p_("Axis point", "Array(double)", fmt([x0, 0, AXIS_HEIGHT]))]), 0), 0),
+            p_("Axis point", "Array(double)", fmt([x0, 0, place["axis_height"]]))]), 0), 0),
         block("Prescribed motion", ends(held_xy) + held_sleepers, 0),
         block("Discrete parts", "\n".join([
             block("Rigid bodies", "\n".join(bodies), 0),
@@ -500,7 +547,7 @@ def deck(case, p, sleepers=True):
         block("Output", "\n".join([
             p_("Energy interval", "int", "100"), p_("History interval", "int", "10"),
             block("Histories", "\n".join(histories), 0)]), 0)]
-    steps = [block("modes", wheel_modes(x0), 0)] if p.get("modes") else []
+    steps = [block("modes", wheel_modes(x0, place["axis_height"]), 0)] if p.get("modes") else []
     steps += [block("preload", preload, 0), block("roll", "\n".join(roll), 0)]
     L.append(block("Steps", "\n".join(steps), 2))
     L.append("</ParameterList>")
@@ -522,9 +569,8 @@ def header(case, p, seats, zone, arc, motion):
   Squeal rolling scene (Yang & Li 2019), case {case}: {what}, {law}. {p['title'].capitalize()}.
   Written by regression/scenes/make_squeal_decks.py: change the script, not this file.
 
-  Model: an S1002 wheel (920 mm) with half its axle rolls at 100 km/h on a {p['rail_length']:g} m 54E1
-  rail from its EN 13674-1 drawing, inclined 1:40, its centre 2.5 mm outboard of the running
-  circle. Rail: {p['zone_size'] * 1e3:g} mm elements over the solution zone x = {zone[0]:.3f}-{zone[1]:.3f} m, graded to
+  Model: {tread_text(p)} with half its axle rolls at 100 km/h on a {p['rail_length']:g} m 54E1
+  rail from its EN 13674-1 drawing, {rail_text(p)}. Rail: {p['zone_size'] * 1e3:g} mm elements over the solution zone x = {zone[0]:.3f}-{zone[1]:.3f} m, graded to
   {p['rail_size'] * 1e3:g} mm; wheel: {p['arc_size'] * 1e3:g} mm over the arc {arc[0]:.1f}-{arc[1]:.1f} deg that rolls through the zone,{approach_text(p, arc)}{transitions_text(p)}
   {p['tread_size'] * 1e3:g} mm at the tread, {p['wheel_size'] * 1e3:g} mm elsewhere. Track: rail seats at {SLEEPER_SPACING:g} m
   ({len(seats)}), each on a pad ({PAD['vertical'] / 1e6:g} MN/m, {PAD['damping'] / 1e3:g} kN s/m; shear {PAD['shear'] / 1e6:g} MN/m) and ballast ({BALLAST['vertical'] / 1e6:g} MN/m,
@@ -534,7 +580,7 @@ def header(case, p, seats, zone, arc, motion):
   {modes_text(p)}Step "preload": statics under gravity, the sprung weight and the wheel's centrifugal load at
   the rolling speed ({preload_support_text(p)}), the wheel pressed into the rail
   (frictionless): wheel load 111 kN. Only the tread faces that roll over the rail are searched.{penalty_text(p)}
-  Step "roll": explicit from the preload, wheel at 100 km/h and omega = V / {ROLLING_RADIUS} m;{element_scaling_text(p)}
+  Step "roll": explicit from the preload, wheel at 100 km/h and omega = V / {geometry(p)['rolling_radius']} m;{element_scaling_text(p)}
   {torque_text(p)};
   {lateral}; {law}; {p['end_time'] * 1e3:g} ms.
   Run:      railfe inputs/scenes/{name}.xml      (mpirun -np 2 ... for two ranks){checkpoint_text(p)}
@@ -543,6 +589,18 @@ def header(case, p, seats, zone, arc, motion):
   Charts:   python3 regression/charts/contact_force_history.py DIR/roll_contact_wheel-rail.csv{trust_text(case, p)}
 -->
 """
+
+
+def tread_text(p):
+    if p.get("tread") == "cylinder":
+        return "a cylindrical tread (920 mm, S1002's flange; the steady check's control)"
+    return "an S1002 wheel (920 mm)"
+
+
+def rail_text(p):
+    if p.get("tread") == "cylinder":
+        return "upright, its centre under the running circle"
+    return "inclined 1:40, its centre 2.5 mm outboard of the running\n  circle"
 
 
 def trust_text(case, p):
@@ -634,6 +692,7 @@ def preload_support_text(p):
 def shipped():
     decks = {f"squeal_case{c}.xml": deck(c, FULL) for c in range(1, 6)}
     decks["squeal_demo.xml"] = deck(3, DEMO)
+    decks["cylindrical_tread.prw"] = cylinder_profile_text()  # in inputs/profiles
     return decks
 
 
@@ -690,6 +749,10 @@ def main():
     parser.add_argument("--wheel-size", type=float,
                         help="the wheel's element size away from its tread (m; demo 0.06, "
                              "full 0.03): the same for the rim")
+    parser.add_argument("--tread", choices=sorted(TREADS),
+                        help="the wheel's tread: S1002 on the rail inclined 1:40 (default), or "
+                             "the steady check's control, a cylinder on the rail upright "
+                             "(inputs/profiles/cylindrical_tread.prw)")
     args = parser.parse_args()
     if args.hold_radius is not None and (args.hold_creepage is None or args.hold_radius <= 0):
         parser.error("--hold-radius needs --hold-creepage and a radius > 0 (m)")
@@ -697,7 +760,7 @@ def main():
         p = dict(FULL if args.scale == "full" else DEMO)
         for key in list(p) + ["sleepers", "modes", "torque", "kinematics", "approach_size",
                               "transitions", "penalty", "penalty_stiffness",
-                              "contact_mass_scaling", "hold_creepage", "hold_radius"]:
+                              "contact_mass_scaling", "hold_creepage", "hold_radius", "tread"]:
             value = getattr(args, key, None)
             if value is not None:
                 p[key] = value
@@ -710,7 +773,7 @@ def main():
         return 0
     stale = []
     for name, text in shipped().items():
-        path = os.path.join(SCENES, name)
+        path = CYLINDER_PROFILE if name == "cylindrical_tread.prw" else os.path.join(SCENES, name)
         if args.check:
             if not os.path.exists(path) or open(path).read() != text:
                 stale.append(name)

@@ -18,10 +18,11 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 PROFILE = os.path.join(HERE, "..", "..", "inputs", "profiles", "MBench_S1002_v3.prw")
 
 
-def wheel_profile():
-    """(y, z) in metres of the S1002 file, z radially outwards."""
+def wheel_profile(profile=PROFILE):
+    """(y, z) in metres of a wheel profile file (the S1002 file unless named), z radially
+    outwards."""
     points, inside = [], False
-    for line in open(PROFILE):
+    for line in open(profile):
         text = line.split("!")[0].strip()
         if text.startswith("point.begin"):
             inside = True
@@ -62,7 +63,8 @@ def rail_head_top(u):
 
 def inclined_head(rail_offset, inclination):
     """The 54E1 head's top as points (y, z) every 0.01 mm, inclined 1:`inclination` about +x
-    (the head tilts towards +y) and shifted by `rail_offset` (m), in increasing y."""
+    (the head tilts towards +y; math.inf: upright) and shifted by `rail_offset` (m), in
+    increasing y."""
     alpha = -math.atan(1 / inclination)
     head = []
     for k in range(-3500, 3501):
@@ -75,12 +77,13 @@ def inclined_head(rail_offset, inclination):
     return head
 
 
-def separation_rows(angle, radius=0.46, rail_offset=-0.0025, inclination=40, wheel_shift=0.0):
+def separation_rows(angle, radius=0.46, rail_offset=-0.0025, inclination=40, wheel_shift=0.0,
+                    profile=PROFILE):
     """Rows (y, s, R) every 0.05 mm over +-25 mm: the gap between the wheel's lowest circle and
     the inclined rail's head, measured normal to a contact plane at `angle` (rad), and the
     wheel's radius at y. `wheel_shift` (m) moves the wheel along +y (the axle's lateral
-    displacement); y stays the track's."""
-    wheel = wheel_profile()
+    displacement); y stays the track's. `profile`: the wheel's profile file."""
+    wheel = wheel_profile(profile)
     z0 = interpolate(wheel, 0.0)
     head = sorted(inclined_head(rail_offset, inclination))
     rows = []

@@ -67,6 +67,7 @@ FREE_LIKE_HELD = False  # the free twin at the held run's penalty settings inste
 # where not the demo's 20 and 60 mm: how finely the bodies below the patch are meshed.
 DEPTH = None
 HUB = None  # --hub R: the held hub's radius (m), where not the generator's 0.385
+CYLINDER = False  # --cylinder: the control's cylindrical tread on the rail upright
 
 
 def held(path):
@@ -81,16 +82,19 @@ def penalty_suffix():
 
 
 def depth_suffix():
-    """The depth mesh's sizes and the held hub's radius in a run's name, where not the demo's."""
+    """The depth mesh's sizes, the held hub's radius and the cylindrical tread in a run's name,
+    where not the demo's."""
     return (("" if DEPTH is None else f"_depth{DEPTH[0]:g}-{DEPTH[1]:g}") +
-            ("" if HUB is None else f"_hub{HUB:g}"))
+            ("" if HUB is None else f"_hub{HUB:g}") + ("_cylinder" if CYLINDER else ""))
 
 
 def depth_options():
-    """The deck generator's options for the depth mesh and the held hub (none: the demo's)."""
+    """The deck generator's options for the depth mesh, the held hub and the tread (none: the
+    demo's)."""
     return (([] if DEPTH is None else ["--section-size", f"{DEPTH[0] / 1000:g}",
                                        "--wheel-size", f"{DEPTH[1] / 1000:g}"]) +
-            ([] if HUB is None else ["--hold-radius", f"{HUB:g}"]))
+            ([] if HUB is None else ["--hold-radius", f"{HUB:g}"]) +
+            (["--tread", "cylinder"] if CYLINDER else []))
 
 
 def held_name(size):
