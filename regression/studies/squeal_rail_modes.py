@@ -1,0 +1,258 @@
+#!/usr/bin/env python3
+"""The full-scale rail's own modes near 1.35 kHz: where the rolling runs' line at 1327-1392 Hz,
+which matches no wheel mode, comes from (issue 16, Table 4).
+
+The full-scale case 1 rolls over x = 1.09-1.24 m, midway between the rail seats at 0.9 and 1.5 m.
+A rail on discrete seats has the pinned-pinned mode: a bending wave whose half wavelength is the
+seat spacing, with its nodes at the seats and its antinodes midway, so the seats' springs hardly
+touch it. For an Euler beam (54E1: I = 2346 cm^4, 54.77 kg/m, 0.6 m) it lies at
+(pi / L)^2 sqrt(EI / m) / (2 pi) = 1309 Hz.
+
+The deck is case 1's (inputs/scenes/squeal_case1.xml) with one modal step of the rail block
+alone, its ends held sideways and along as in the run, and its seats held vertically in one of
+two ways, which bound the run's pads between them:
+  pads     every foot node under the 150 mm pad held (the pad's rotation clamped);
+  centres  only the foot nodes within 11 mm of each seat's centre (pinned).
+For each mode the study takes the vertical and lateral motion of the head's top along the rail
+(mean |u| in 50 mm bins) and calls a mode vertical pinned-pinned where the head moves mostly
+vertically and, between the outer seats, at most a third as much at the seats as midway.
+
+Beside them: the power spectral density (Welch) of the full-scale case 1's normal and creep forces
+from 2 ms (docs/data/squeal_case1_full_forces.csv) and the rim sines fitted near the line
+(docs/data/squeal_full_rim_poles.csv).
+
+Writes docs/data/squeal_rail_modes.csv (every mode of both steps) and
+docs/img/squeal_rail_modes.png. Each modal step takes about 4.5 min and 8 GB on one core:
+
+    /usr/bin/python3 regression/studies/squeal_rail_modes.py [build/bin/railfe] [--reuse]
+        [--replot]
+"""
+import os
+import sys
+import xml.etree.ElementTree as ET
+
+import numpy as np
+from scipy.io import netcdf_file
+from scipy.signal import butter, sosfiltfilt, welch
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.join(HERE, "..", "..")
+sys.path[:0] = [HERE]
+from railfe_runs import csv_rows, run_or_reuse, study_parser, typed_rows, write_rows  # noqa: E402
+from squeal_pinned_modes import DATA, DECK, POLES, child, parameter  # noqa: E402
+
+CSV = os.path.join(DATA, "squeal_rail_modes.csv")
+FORCES = os.path.join(DATA, "squeal_case1_full_forces.csv")
+PNG = os.path.join(ROOT, "docs", "img", "squeal_rail_modes.png")
+BAND = (500.0, 2000.0)  # Hz
+SEATS = (0.3, 0.9, 1.5, 2.1)  # m, case 1's seat centres (make_squeal_decks.sleeper_positions)
+PAD_HALF = 0.075  # m, half the pad's length along the rail
+PIN_HALF = 0.011  # m: a node row or two of the rail's 20 mm elements there
+ZONE = (1.09, 1.24)  # m, case 1's solution zone, what the wheel rolls over
+RAIL_Y = -0.0025  # m, the rail's centre
+BIN = 0.05  # m
+STEPS = {"pads": "the pad's footprint held vertically", "centres": "the seats' centres held"}
+BANDS = ((950.0, 1150.0), (1250.0, 1450.0), (1500.0, 1700.0))  # Hz, the history panel's
+EULER_HZ = (np.pi / 0.6) ** 2 * np.sqrt(210e9 * 2346e-8 / 54.77) / (2 * np.pi)
+
+
+def deck_text():
+    """Case 1's mesh and materials with a modal step of the rail per entry of STEPS."""
+    tree = ET.parse(DECK)
+    root = tree.getroot()
+    node_sets = child(child(root, "Mesh"), "Node sets")
+    for k, x in enumerate(SEATS):
+        centre = ET.SubElement(node_sets, "ParameterList", {"name": f"seat {k + 1} centre"})
+        parameter(centre, "Box", "Array(double)",
+                  f"{{{x - PIN_HALF!r}, {x + PIN_HALF!r}, -1, 1, -1, 1}}")
+        parameter(centre, "Within", "string", "rail.foot_bottom")
+    steps = child(root, "Steps")
+    for step in list(steps):
+        steps.remove(step)
+    for name in STEPS:
+        step = ET.SubElement(steps, "ParameterList", {"name": name})
+        parameter(step, "Module", "string", "modal")
+        parameter(step, "Blocks", "Array(string)", "{rail.rail}")
+        parameter(step, "Frequency band", "Array(double)", f"{{{BAND[0]:g}, {BAND[1]:g}}}")
+        supports = ET.SubElement(step, "ParameterList", {"name": "Supports"})
+        for k in range(len(SEATS)):
+            held = ET.SubElement(supports, "ParameterList", {"name": f"seat {k + 1}"})
+            parameter(held, "Node set", "string",
+                      f"seat {k + 1}" + (" centre" if name == "centres" else ""))
+            parameter(held, "Components", "string", "z")
+        for end, node_set in (("rail start", "rail.start_face"), ("rail end", "rail.end_face")):
+            held = ET.SubElement(supports, "ParameterList", {"name": end})
+            parameter(held, "Node set", "string", node_set)
+            parameter(held, "Components", "string", "xy")
+    return ET.tostring(root, encoding="unicode")
+
+
+def head_profiles(exo):
+    """Per mode of `exo`: bin centres x (m) and mean |u_z|, |u_y| of the head's top nodes."""
+    with netcdf_file(exo, "r", mmap=False) as f:
+        v = f.variables
+        x, y, z = (v[k][:].copy() for k in ("coordx", "coordy", "coordz"))
+        names = ["".join(c.decode() for c in row if c) for row in v["name_nod_var"][:]]
+        uy_var = "vals_nod_var%d" % (names.index("displacement_y") + 1)
+        uz_var = "vals_nod_var%d" % (names.index("displacement_z") + 1)
+        top = (z > -0.004) & (np.abs(y - RAIL_Y) < 0.006)
+        edges = np.arange(0.0, 2.4 + 1e-9, BIN)
+        which = np.digitize(x[top], edges) - 1
+        centres = 0.5 * (edges[:-1] + edges[1:])
+        profiles = []
+        for t in range(v["time_whole"].shape[0]):
+            uz, uy = np.abs(v[uz_var][t][top]), np.abs(v[uy_var][t][top])
+            profiles.append((np.array([uz[which == k].mean() for k in range(len(centres))]),
+                             np.array([uy[which == k].mean() for k in range(len(centres))])))
+    return centres, profiles
+
+
+def describe(centres, uz, uy):
+    """(vertical share, u_z at the seats over u_z midway between them, kind)."""
+    inner = (centres > SEATS[0]) & (centres < SEATS[-1])
+    share = float(np.sum(uz[inner] ** 2) / np.sum(uz[inner] ** 2 + uy[inner] ** 2))
+
+    def near(points):
+        return float(np.mean([np.interp(p, centres, uz) for p in points]))
+    middles = [0.5 * (a + b) for a, b in zip(SEATS, SEATS[1:])]
+    ratio = near(SEATS[1:-1]) / near(middles)
+    kind = ("vertical pinned-pinned" if share > 0.5 and ratio < 1 / 3 else
+            "vertical" if share > 0.5 else "lateral")
+    return share, ratio, kind
+
+
+def run(railfe, work, reuse):
+    results, _ = run_or_reuse(railfe, deck_text(), work, "rail_modes", reuse)
+    rows = []
+    for step, label in STEPS.items():
+        modes = csv_rows(os.path.join(results, f"{step}_modes.csv"))
+        centres, profiles = head_profiles(os.path.join(results, f"{step}.exo"))
+        for mode, (uz, uy) in zip(modes, profiles):
+            share, ratio, kind = describe(centres, uz, uy)
+            row = {"supports": label, "mode": int(mode["mode"]),
+                   "frequency_hz": float(mode["frequency_hz"]), "vertical_share": share,
+                   "seat_over_midspan_vertical": ratio, "kind": kind,
+                   "zone_vertical_over_max": float(
+                       np.max(uz[(centres > ZONE[0]) & (centres < ZONE[1])]) / np.max(uz))}
+            row.update({f"head_uz_{100 * c:.0f}cm": float(u / np.max(uz))
+                        for c, u in zip(centres, uz)})
+            rows.append(row)
+    write_rows(CSV, rows)
+    return rows
+
+
+def forces(start=0.0):
+    """Case 1's normal and creep forces from `start` (s) on a uniform grid: (t, step, N, Fx)."""
+    rows = [r for r in csv_rows(FORCES) if float(r["time_s"]) >= start]
+    t = np.array([float(r["time_s"]) for r in rows])
+    step = np.median(np.diff(t))
+    grid = np.arange(t[0], t[-1], step)
+    return (grid, step) + tuple(np.interp(grid, t, [float(r[c]) for r in rows])
+                                for c in ("normal_force_N", "tangential_1_N"))
+
+
+def spectra():
+    """Welch PSDs of case 1's normal and creep forces from 2 ms: (f, normal, creep)."""
+    grid, step, *values = forces(0.002)
+    out = []
+    for v in values:
+        f, p = welch(v - v.mean(), fs=1 / step, nperseg=min(len(grid), 8192))
+        out.append(p)
+    return f, out[0], out[1]
+
+
+def band_history(band):
+    """RMS of the normal force band-passed to `band` (Hz) in 1 ms blocks: (block starts, kN)."""
+    grid, step, normal, _ = forces()
+    sos = butter(4, band, btype="band", fs=1 / step, output="sos")
+    passed = sosfiltfilt(sos, normal - normal.mean())
+    starts = np.arange(0.0, grid[-1] - 1e-3 + 1e-9, 1e-3)
+    return starts, [1e-3 * np.sqrt(np.mean(passed[(grid >= a) & (grid < a + 1e-3)] ** 2))
+                    for a in starts]
+
+
+def decorate(axis, xlabel, ylabel, title):
+    """Labels, title, legend and grid of one panel."""
+    axis.set_xlabel(xlabel)
+    axis.set_ylabel(ylabel)
+    axis.set_title(title)
+    axis.legend(fontsize=8)
+    axis.grid(alpha=0.3)
+
+
+def plot(rows):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, (shapes, freqs, history) = plt.subplots(1, 3, figsize=(22, 6))
+    pinned = [r for r in rows if r["kind"] == "vertical pinned-pinned"]
+    keys = sorted((k for k in rows[0] if k.startswith("head_uz_")),
+                  key=lambda k: float(k[8:-2]))
+    centres = [float(k[8:-2]) / 100 for k in keys]
+    for r in pinned:
+        style = "-" if r["supports"] == STEPS["pads"] else "--"
+        shapes.plot(centres, [r[k] for k in keys], style,
+                    label=f"{r['frequency_hz']:.0f} Hz, {r['supports']}")
+    for x in SEATS:
+        shapes.axvline(x, color="k", lw=0.8)
+    shapes.axvspan(*ZONE, color="orange", alpha=0.25, label="where case 1's wheel rolls")
+    decorate(shapes, "x along the rail (m; black: the seats' centres)",
+             "head's vertical motion, mean |u_z| per 50 mm (of its largest)",
+             "the rail's vertical pinned-pinned modes: nodes at the seats,\n"
+             "antinodes midway, where the wheel rolls (the ends overhang, free)")
+
+    f, normal, creep = spectra()
+    keep = (f > 900) & (f < 1900)
+    freqs.semilogy(f[keep], normal[keep], label="case 1's normal force from 2 ms (Welch)")
+    freqs.semilogy(f[keep], creep[keep], label="its creep force")
+    for r in rows:
+        if r["kind"] == "lateral":
+            continue
+        colour = "C3" if r["kind"] == "vertical pinned-pinned" else "C7"
+        freqs.axvline(r["frequency_hz"], color=colour,
+                      linestyle="-" if r["supports"] == STEPS["pads"] else "--", lw=1)
+    freqs.plot([], [], color="C3", label="rail's vertical pinned-pinned modes (solid: pads held, "
+               "dashed: centres)")
+    freqs.plot([], [], color="C7", label="its other vertical modes")
+    poles = [r for r in typed_rows(POLES, ["component", "family"])
+             if 1300 < r["frequency_hz"] < 1400]
+    top = freqs.get_ylim()[1]
+    for r in poles:
+        freqs.plot(r["frequency_hz"], top * 0.5, "kv")
+    freqs.plot([], [], "kv", label="rim sines fitted near the line (every record)")
+    freqs.axvline(EULER_HZ, color="k", linestyle=":", label=f"Euler beam, 0.6 m: {EULER_HZ:.0f} Hz")
+    freqs.set_xlabel("frequency (Hz)")
+    freqs.set_ylabel("PSD (N²/Hz)")
+    freqs.set_title("the 1.33-1.39 kHz line in the forces and at the rim against the rail's modes")
+    freqs.legend(fontsize=8, loc="lower left")
+    freqs.grid(alpha=0.3, which="both")
+    for band in BANDS:
+        starts, rms = band_history(band)
+        history.plot(1e3 * (starts + 5e-4), rms, "o-", label=f"{band[0]:g}-{band[1]:g} Hz")
+    history.axvline(1e3 * (SEATS[1] - 0.7) / (100 / 3.6), color="k", lw=0.8,
+                    label="the wheel over seat 2")
+    decorate(history, "time (ms; the wheel at x = 0.7 m + V t)",
+             "normal force band-passed, RMS per 1 ms (kN)",
+             "case 1: the line rings from the start and decays;\nit is no steady forcing")
+    fig.tight_layout()
+    os.makedirs(os.path.dirname(PNG), exist_ok=True)
+    fig.savefig(PNG, dpi=100)
+    print(PNG)
+
+
+def main():
+    args = study_parser(__doc__.split("\n")[0], "/tmp/railfe_squeal_rail_modes", ROOT,
+                        reuse=True).parse_args()
+    rows = (typed_rows(CSV, ["supports", "kind"]) if args.replot
+            else run(args.railfe, args.work, args.reuse))
+    for r in rows:
+        if r["kind"] != "lateral":
+            print(f"{r['supports']:40s} {r['frequency_hz']:8.1f} Hz  {r['kind']:24s} "
+                  f"vertical share {r['vertical_share']:.2f}, seats/midway "
+                  f"{r['seat_over_midspan_vertical']:.2f}, in the zone "
+                  f"{r['zone_vertical_over_max']:.2f}")
+    plot(rows)
+
+
+if __name__ == "__main__":
+    main()
