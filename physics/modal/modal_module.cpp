@@ -1,6 +1,7 @@
 #include "physics/modal/modal_module.hpp"
 
 #include "physics/common/solid_beam_ties.hpp"
+#include "physics/elements/node_set_springs.hpp"
 #include "physics/modal/modal_step.hpp"
 
 namespace railfe {
@@ -94,6 +95,10 @@ ParameterSpec modal_parameters() {
   support.required_text("Node set", "The nodes.");
   support.text("Components", "xyz", "Fixed components: letters of 'xyz'.");
   spec.named_sublists("Supports", support, "Fixed node sets (none = a free body).");
+  spec.named_sublists("Springs", node_set_spring_parameters(),
+                      "Node sets on springs to the ground (rail pads, ballast) or to another node "
+                      "set (a pad over a sleeper, a stuck contact patch), as in a statics step: "
+                      "their stiffness is added to K.");
 
   spec.real("Backward error limit", 1e-8,
             "A returned pair fails its check when ||K phi - lambda M phi|| / ((||K|| + |lambda| "

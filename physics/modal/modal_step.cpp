@@ -1,6 +1,7 @@
 #include "physics/modal/modal_step.hpp"
 
 #include <Teuchos_Array.hpp>
+#include <TpetraExt_MatrixMatrix.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
@@ -238,7 +239,32 @@ std::vector<char> ModalStep::check_blocks_and_supports(const CheckContext& conte
     }
     supports_.push_back(support);
   }
+  check_springs(context, active, kept);
   return active;
+}
+
+void ModalStep::check_springs(const CheckContext& context, const std::vector<char>& active,
+                              const std::string& kept) {
+  const std::string& deck = context.source();
+  springs_ = read_node_set_springs(*parameters_, context.model.partition(), deck, context.path);
+  if (sections_ && !mixed_ && !springs_.empty())
+    throw_input_error(deck, context.path + "/Springs/" + springs_.front().name,
+                      "acts on solid nodes, and the model has beams, springs and point masses",
+                      "a spring-damper section on a one-node block (Sections) for springs to "
+                      "the ground");
+  for (const NodeSetSpring& spring : springs_) {
+    for (const auto& [set, label] :
+         {std::pair{spring.node_set, "Node set"}, std::pair{spring.to_node_set, "To node set"}}) {
+      if (set.empty())
+        continue;
+      const auto& nodes = context.model.mesh().node_set(set, deck, "").nodes;
+      // A node outside the Blocks carries no unknown, so its share would hold nothing.
+      if (std::any_of(nodes.begin(), nodes.end(), [&](GlobalIndex n) { return !active[n]; }))
+        throw_input_error(deck, context.path + "/Springs/" + spring.name + "/" + label,
+                          "node set '" + set + "' has nodes outside " + kept,
+                          "a node set on the elements the modal step computes");
+    }
+  }
 }
 
 const DofMap& ModalStep::step_dofs(Model& model) {
@@ -386,6 +412,20 @@ void ModalStep::check(const CheckContext& context) {
   }
 }
 
+Teuchos::RCP<TpetraMatrix> ModalStep::with_springs(FeMatrix& stiffness, const DofMap& dofs,
+                                                   const StepContext& context) {
+  if (springs_.empty())
+    return stiffness.matrix();
+  // Read again on the step's own partition (the Blocks'), whose DOFs the pairs index.
+  springs_ = read_node_set_springs(*parameters_, dofs.partition(), context.source(), context.path);
+  stiffness.add_to_diagonal(ground_spring_diagonal(springs_, dofs));
+  Teuchos::RCP<TpetraMatrix> K = stiffness.matrix();
+  // Springs between node sets couple nodes no element joins: their matrix is added to K.
+  if (const auto paired = paired_spring_stiffness(springs_, dofs); !paired.is_null())
+    K = Tpetra::MatrixMatrix::add(1.0, false, *K, 1.0, false, *paired);
+  return K;
+}
+
 void ModalStep::run(StepContext& context) {
   Model& model = context.model;
   const DofMap& dofs = step_dofs(model);
@@ -428,7 +468,8 @@ void ModalStep::run(StepContext& context) {
   add_rigid_links(links_, dofs, constraints, context.source(), links_path_);
   constraints.finalize();
   TpetraVector no_load(dofs.owned_map());
-  const Teuchos::RCP<const TpetraMatrix> K = constraints.apply(stiffness.matrix(), no_load);
+  const Teuchos::RCP<const TpetraMatrix> K =
+      constraints.apply(with_springs(stiffness, dofs, context), no_load);
   // Tᵀ M T: a tied or linked node's inertia moves to its master.
   const Teuchos::RCP<const TpetraMatrix> M = constraints.constrained_mass(mass.matrix());
   const double assembly_seconds = clock.seconds();

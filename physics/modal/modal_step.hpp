@@ -10,11 +10,14 @@
 #include "framework/app/module.hpp"
 #include "physics/common/rigid_links.hpp"
 #include "physics/common/structural_sections.hpp"
+#include "physics/elements/node_set_springs.hpp"
 #include "physics/materials/elastic_material.hpp"
 #include "physics/modal/mode_checks.hpp"
 #include "physics/modal/mode_classifier.hpp"
 
 namespace railfe {
+
+class FeMatrix;
 
 /// A fixed node set of a modal step.
 struct ModalSupport {
@@ -58,6 +61,12 @@ class ModalStep : public AnalysisStep {
   void check_structural(const CheckContext& context);
   // Reads Blocks and Supports; returns the nodes that carry unknowns.
   std::vector<char> check_blocks_and_supports(const CheckContext& context);
+  // Reads Springs; refuses a node set with nodes outside the Blocks (\p kept names them).
+  void check_springs(const CheckContext& context, const std::vector<char>& active,
+                     const std::string& kept);
+  // The assembled stiffness with the Springs added (the matrix itself where there are none).
+  Teuchos::RCP<TpetraMatrix> with_springs(FeMatrix& stiffness, const DofMap& dofs,
+                                          const StepContext& context);
   // Modes of the first eigensolver batch: Modes, or its automatic value.
   int first_batch(long long free_dofs) const;
   void classify(const DofMap& dofs, const TpetraMultiVector& modes,
@@ -76,8 +85,9 @@ class ModalStep : public AnalysisStep {
   std::vector<RigidLink> links_;  // the mesh's rigid_link blocks and the Solid-beam ties
   std::string links_path_;        // where their errors point
   std::vector<ModalSupport> supports_;
-  std::vector<std::string> block_names_;            // Blocks (empty = the whole mesh)
-  std::unique_ptr<Mesh> block_mesh_;                // the mesh of Blocks, if given
+  std::vector<NodeSetSpring> springs_;    // Springs (pairs indexed on the step's partition)
+  std::vector<std::string> block_names_;  // Blocks (empty = the whole mesh)
+  std::unique_ptr<Mesh> block_mesh_;      // the mesh of Blocks, if given
   std::unique_ptr<MeshPartition> block_partition_;  // its partition
   std::unique_ptr<DofMap> block_dofs_;              // its DOFs
   std::vector<ReferenceMode> references_;

@@ -4,7 +4,7 @@
 #include "physics/common/contact_settings.hpp"
 #include "physics/common/solid_beam_ties.hpp"
 #include "physics/common/solid_conditions.hpp"
-#include "physics/statics/node_set_springs.hpp"
+#include "physics/elements/node_set_springs.hpp"
 #include "physics/statics/statics_step.hpp"
 
 namespace railfe {

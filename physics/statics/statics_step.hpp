@@ -11,8 +11,8 @@
 #include "physics/common/rigid_links.hpp"
 #include "physics/common/solid_conditions.hpp"
 #include "physics/common/structural_sections.hpp"
+#include "physics/elements/node_set_springs.hpp"
 #include "physics/materials/elastic_material.hpp"
-#include "physics/statics/node_set_springs.hpp"
 
 namespace railfe {
 

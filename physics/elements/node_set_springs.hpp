@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// Springs on node sets in a statics step, as the explicit module's node-set springs are, so
-/// that a statics preload and the explicit run that starts from it see the same supports: a
+/// Springs on node sets in a statics or modal step, as the explicit module's node-set springs
+/// are, so that a statics preload, the modes and the explicit run see the same supports: a
 /// node set on springs to the ground (a sleeper on ballast), or tied to another node set (a rail
 /// seat on the pad over a sleeper), each node of the set to the nearest node of the other
 /// (framework/mesh/nearest_nodes.hpp). The stiffness is the set's total, shared equally by its
@@ -29,7 +29,7 @@ struct NodeSetSpring {
   std::vector<std::pair<GlobalIndex, GlobalIndex>> pairs;
 };
 
-/// Valid parameters of one Springs sublist of a statics step.
+/// Valid parameters of one Springs sublist of a statics or modal step.
 ParameterSpec node_set_spring_parameters();
 
 /// Reads the step's Springs; throws InputError naming \p deck and the parameter for an unknown

@@ -1,4 +1,4 @@
-#include "physics/statics/node_set_springs.hpp"
+#include "physics/elements/node_set_springs.hpp"
 
 #include <Tpetra_Vector.hpp>
 
