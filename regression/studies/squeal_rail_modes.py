@@ -21,12 +21,20 @@ Beside them: the power spectral density (Welch) of the full-scale case 1's norma
 from 2 ms (docs/data/squeal_case1_full_forces.csv) and the rim sines fitted near the line
 (docs/data/squeal_full_rim_poles.csv).
 
-Writes docs/data/squeal_rail_modes.csv (every mode of both steps) and
-docs/img/squeal_rail_modes.png. Each modal step takes about 4.5 min and 8 GB on one core:
+A second deck adds the run's own track: the rail on the preload's pads over the sleepers and
+the ballast below (the modal step's Springs), alone ("track", 900-1800 Hz) and with the wheel
+clamped at its axle end and its tread tied to the rail over the start's patch ("coupled",
+1280-1460 Hz: the line's neighbourhood; over 900-1800 Hz its 367 modes' Krylov space did not fit
+in 24 GB).
+
+Writes docs/data/squeal_rail_modes.csv (every mode of the four steps) and
+docs/img/squeal_rail_modes.png. The rail alone takes about 4.5 min and 8 GB a step on one core,
+the track 7.6 min, the coupled step 37 min and 23.6 GB (of this machine's 24):
 
     /usr/bin/python3 regression/studies/squeal_rail_modes.py [build/bin/railfe] [--reuse]
         [--replot]
 """
+import copy
 import os
 import sys
 import xml.etree.ElementTree as ET
@@ -52,6 +60,16 @@ ZONE = (1.09, 1.24)  # m, case 1's solution zone, what the wheel rolls over
 RAIL_Y = -0.0025  # m, the rail's centre
 BIN = 0.05  # m
 STEPS = {"pads": "the pad's footprint held vertically", "centres": "the seats' centres held"}
+# The second deck: the rail on the run's pads, sleepers and ballast (the preload's Springs), alone
+# and with the wheel, its tread tied to the rail over the start's patch (the run's stuck patch,
+# whose penalty springs are about 25 times stiffer than the patch: r = 0.039).
+TRACK_STEPS = {"track": "rail on the run's pads, sleepers and ballast",
+               "coupled": "the same with the wheel, its patch tied to the rail"}
+# Hz: the track's band, and the coupled step's about the line (900-1800 Hz held 367 coupled
+# modes, whose Krylov space did not fit in this machine's 24 GB)
+TRACK_BANDS = {"track": (900.0, 1800.0), "coupled": (1280.0, 1460.0)}
+START_X = 0.7  # m, the wheel's lowest point at the start (case 1's)
+PATCH_TIE = 5e10  # N/m in each direction, the tie's total
 BANDS = ((950.0, 1150.0), (1250.0, 1450.0), (1500.0, 1700.0))  # Hz, the history panel's
 EULER_HZ = (np.pi / 0.6) ** 2 * np.sqrt(210e9 * 2346e-8 / 54.77) / (2 * np.pi)
 
@@ -87,6 +105,56 @@ def deck_text():
     return ET.tostring(root, encoding="unicode")
 
 
+def track_deck_text():
+    """Case 1's mesh and materials with the TRACK_STEPS: the preload's springs (pads over the
+    sleepers, ballast below), the sleepers' bottoms and the rail's ends held sideways and along,
+    and for the coupled step the wheel clamped at the axle end and tied to the rail at the
+    patch."""
+    tree = ET.parse(DECK)
+    root = tree.getroot()
+    steps = child(root, "Steps")
+    springs = copy.deepcopy(child(child(steps, "preload"), "Springs"))
+    node_sets = child(child(root, "Mesh"), "Node sets")
+    for name, box, within in (
+            ("patch wheel", (START_X - 0.007, START_X + 0.007, -0.0085, 0.0115, -0.004, 0.004),
+             "wheel.tread"),
+            ("patch rail", (START_X - 0.03, START_X + 0.03, -0.015, 0.018, -0.004, 0.002),
+             "rail.running_surface")):
+        entry = ET.SubElement(node_sets, "ParameterList", {"name": name})
+        parameter(entry, "Box", "Array(double)", "{" + ", ".join(repr(v) for v in box) + "}")
+        parameter(entry, "Within", "string", within)
+    for step in list(steps):
+        steps.remove(step)
+    sleepers = [f"sleeper {k + 1}" for k in range(len(SEATS))]
+    for name in TRACK_STEPS:
+        step = ET.SubElement(steps, "ParameterList", {"name": name})
+        parameter(step, "Module", "string", "modal")
+        blocks = ["rail.rail"] + [f"{s}.sleeper" for s in sleepers]
+        if name == "coupled":
+            blocks += ["wheel.wheel", "wheel.axle"]
+        parameter(step, "Blocks", "Array(string)", "{" + ", ".join(blocks) + "}")
+        band = TRACK_BANDS[name]
+        parameter(step, "Frequency band", "Array(double)", f"{{{band[0]:g}, {band[1]:g}}}")
+        supports = ET.SubElement(step, "ParameterList", {"name": "Supports"})
+        held = [("rail start", "rail.start_face", "xy"), ("rail end", "rail.end_face", "xy")]
+        held += [(s, f"{s}.zmin", "xy") for s in sleepers]
+        if name == "coupled":
+            held.append(("axle box", "wheel.axle_end", "xyz"))
+        for label, node_set, components in held:
+            entry = ET.SubElement(supports, "ParameterList", {"name": label})
+            parameter(entry, "Node set", "string", node_set)
+            parameter(entry, "Components", "string", components)
+        step_springs = copy.deepcopy(springs)
+        if name == "coupled":
+            tie = ET.SubElement(step_springs, "ParameterList", {"name": "patch"})
+            parameter(tie, "Node set", "string", "patch wheel")
+            parameter(tie, "To node set", "string", "patch rail")
+            parameter(tie, "Stiffness", "Array(double)", f"{{{PATCH_TIE:g}, {PATCH_TIE:g}, "
+                      f"{PATCH_TIE:g}}}")
+        step.append(step_springs)
+    return ET.tostring(root, encoding="unicode")
+
+
 def head_profiles(exo):
     """Per mode of `exo`: bin centres x (m) and mean |u_z|, |u_y| of the head's top nodes."""
     with netcdf_file(exo, "r", mmap=False) as f:
@@ -105,6 +173,59 @@ def head_profiles(exo):
             profiles.append((np.array([uz[which == k].mean() for k in range(len(centres))]),
                              np.array([uy[which == k].mean() for k in range(len(centres))])))
     return centres, profiles
+
+
+def exo_names(variables, key):
+    return ["".join(c.decode() for c in row if c) for row in variables[key][:]]
+
+
+def coupled_rows(exo, step, modes):
+    """Per mode of a TRACK_STEPS step: the rail's head profile and kind (as head_profiles and
+    describe), the wheel's share of the squared displacements, and how much the patch's tie
+    stretches vertically against the patch's own vertical motion."""
+    with netcdf_file(exo, "r", mmap=False) as f:
+        v = f.variables
+        x, y, z = (v[k][:].copy() for k in ("coordx", "coordy", "coordz"))
+        blocks = exo_names(v, "eb_names")
+        rail = np.zeros(len(x), bool)
+        wheel = np.zeros(len(x), bool)
+        for k, name in enumerate(blocks):
+            nodes = np.unique(v[f"connect{k + 1}"][:]) - 1
+            if name == "rail.rail":
+                rail[nodes] = True
+            elif name.startswith("wheel."):
+                wheel[nodes] = True
+        sets = exo_names(v, "ns_names")
+        patch = {name: v[f"node_ns{sets.index(name) + 1}"][:] - 1 for name in
+                 ("patch wheel", "patch rail") if name in sets}
+        names = exo_names(v, "name_nod_var")
+        fields = [f"vals_nod_var{names.index(f'displacement_{c}') + 1}" for c in "xyz"]
+        top = rail & (z > -0.004) & (np.abs(y - RAIL_Y) < 0.006)
+        edges = np.arange(0.0, 2.4 + 1e-9, BIN)
+        which = np.digitize(x[top], edges) - 1
+        centres = 0.5 * (edges[:-1] + edges[1:])
+        rows = []
+        for t, mode in enumerate(modes):
+            u = [v[field][t].copy() for field in fields]
+            uz = np.array([np.abs(u[2][top][which == k]).mean() for k in range(len(centres))])
+            uy = np.array([np.abs(u[1][top][which == k]).mean() for k in range(len(centres))])
+            share, ratio, kind = describe(centres, uz, uy)
+            squared = u[0] ** 2 + u[1] ** 2 + u[2] ** 2
+            row = {"supports": TRACK_STEPS[step], "mode": int(mode["mode"]),
+                   "frequency_hz": float(mode["frequency_hz"]), "vertical_share": share,
+                   "seat_over_midspan_vertical": ratio, "kind": kind,
+                   "wheel_share": float(squared[wheel].sum() / squared.sum())}
+            if patch:
+                w, r = (float(u[2][patch[n]].mean()) for n in ("patch wheel", "patch rail"))
+                row["patch_stretch_over_motion"] = abs(w - r) / max(abs(w), abs(r))
+                # The tie is the wheel's only link to the track, so its force is the contact's:
+                # per unit modal mass (the shape's own modal mass from the modes table), and
+                # that squared over omega^2, the share a normal impulse at the patch puts there.
+                force = PATCH_TIE * abs(w - r) / np.sqrt(float(mode["modal_mass_kg"]))
+                row["patch_normal_force_per_unit_modal_mass_N"] = force
+                row["patch_normal_weight"] = (force / (2 * np.pi * row["frequency_hz"])) ** 2
+            rows.append(row)
+    return rows
 
 
 def describe(centres, uz, uy):
@@ -137,6 +258,12 @@ def run(railfe, work, reuse):
             row.update({f"head_uz_{100 * c:.0f}cm": float(u / np.max(uz))
                         for c, u in zip(centres, uz)})
             rows.append(row)
+    results, _ = run_or_reuse(railfe, track_deck_text(), work, "track_modes", reuse)
+    for step in TRACK_STEPS:
+        rows += coupled_rows(os.path.join(results, f"{step}.exo"), step,
+                             csv_rows(os.path.join(results, f"{step}_modes.csv")))
+    columns = list(dict.fromkeys(k for row in rows for k in row))  # one table: NaN where none
+    rows = [{k: row.get(k, float("nan")) for k in columns} for row in rows]
     write_rows(CSV, rows)
     return rows
 
@@ -171,6 +298,32 @@ def band_history(band):
                     for a in starts]
 
 
+def coupled_panel(axis, rows):
+    """The coupled modes' share of a normal impulse at the patch against their frequency."""
+    if not rows:
+        axis.set_visible(False)
+        return
+    weights = np.array([r["patch_normal_weight"] for r in rows])
+    weights /= weights.sum()
+    freq = [r["frequency_hz"] for r in rows]
+    axis.bar(freq, weights, width=6, color=["C3" if r["wheel_share"] > 0.2 else "C2"
+                                            for r in rows])
+    from matplotlib.patches import Patch
+    for f, w in zip(freq, weights):
+        if w > 0.08:
+            axis.annotate(f"{f:.0f} Hz", (f, w), textcoords="offset points", xytext=(3, 3),
+                          fontsize=8)
+    axis.axvspan(1327, 1392, color="grey", alpha=0.2)
+    axis.set_xlim(*TRACK_BANDS["coupled"])
+    decorate(axis, "frequency (Hz)", "share of a normal impulse at the patch",
+             "wheel and track coupled through the start's patch (tied):\n"
+             "every mode from {:g} to {:g} Hz".format(*TRACK_BANDS["coupled"]))
+    axis.legend(handles=[Patch(color="C3", label="the wheel carries > 20 % of the motion"),
+                         Patch(color="C2", label="mostly the track"),
+                         Patch(color="grey", alpha=0.2, label="the line in the run: rim sines, "
+                               "creep and normal force")], fontsize=8, loc="upper left")
+
+
 def decorate(axis, xlabel, ylabel, title):
     """Labels, title, legend and grid of one panel."""
     axis.set_xlabel(xlabel)
@@ -184,8 +337,10 @@ def plot(rows):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, (shapes, freqs, history) = plt.subplots(1, 3, figsize=(22, 6))
-    pinned = [r for r in rows if r["kind"] == "vertical pinned-pinned"]
+    fig, grid = plt.subplots(2, 2, figsize=(17, 12))
+    (shapes, freqs), (history, coupled) = grid
+    alone = [r for r in rows if r["supports"] in STEPS.values()]
+    pinned = [r for r in alone if r["kind"] == "vertical pinned-pinned"]
     keys = sorted((k for k in rows[0] if k.startswith("head_uz_")),
                   key=lambda k: float(k[8:-2]))
     centres = [float(k[8:-2]) / 100 for k in keys]
@@ -205,7 +360,7 @@ def plot(rows):
     keep = (f > 900) & (f < 1900)
     freqs.semilogy(f[keep], normal[keep], label="case 1's normal force from 2 ms (Welch)")
     freqs.semilogy(f[keep], creep[keep], label="its creep force")
-    for r in rows:
+    for r in alone:
         if r["kind"] == "lateral":
             continue
         colour = "C3" if r["kind"] == "vertical pinned-pinned" else "C7"
@@ -214,6 +369,16 @@ def plot(rows):
     freqs.plot([], [], color="C3", label="rail's vertical pinned-pinned modes (solid: pads held, "
                "dashed: centres)")
     freqs.plot([], [], color="C7", label="its other vertical modes")
+    for r in rows:
+        if r["supports"] == TRACK_STEPS["track"] and r["kind"] != "lateral":
+            freqs.axvline(r["frequency_hz"], color="C2", linestyle=":", lw=1.5)
+    freqs.plot([], [], color="C2", linestyle=":", label="its vertical modes on the run's pads "
+               "and sleepers")
+    for r in rows:
+        if r["supports"] == TRACK_STEPS["coupled"]:
+            freqs.axvline(r["frequency_hz"], color="C4", lw=2.5, alpha=0.7)
+    freqs.plot([], [], color="C4", lw=2.5, alpha=0.7, label="wheel and track coupled at the "
+               "patch (only 1280-1460 Hz computed)")
     poles = [r for r in typed_rows(POLES, ["component", "family"])
              if 1300 < r["frequency_hz"] < 1400]
     top = freqs.get_ylim()[1]
@@ -223,7 +388,7 @@ def plot(rows):
     freqs.axvline(EULER_HZ, color="k", linestyle=":", label=f"Euler beam, 0.6 m: {EULER_HZ:.0f} Hz")
     freqs.set_xlabel("frequency (Hz)")
     freqs.set_ylabel("PSD (N²/Hz)")
-    freqs.set_title("the 1.33-1.39 kHz line in the forces and at the rim against the rail's modes")
+    freqs.set_title("the 1.33-1.39 kHz line in the forces and at the rim against the modes")
     freqs.legend(fontsize=8, loc="lower left")
     freqs.grid(alpha=0.3, which="both")
     for band in BANDS:
@@ -234,6 +399,7 @@ def plot(rows):
     decorate(history, "time (ms; the wheel at x = 0.7 m + V t)",
              "normal force band-passed, RMS per 1 ms (kN)",
              "case 1: the line rings from the start and decays;\nit is no steady forcing")
+    coupled_panel(coupled, [r for r in rows if r["supports"] == TRACK_STEPS["coupled"]])
     fig.tight_layout()
     os.makedirs(os.path.dirname(PNG), exist_ok=True)
     fig.savefig(PNG, dpi=100)
