@@ -1,7 +1,9 @@
 #include "physics/elements/node_set_springs.hpp"
 
+#include <TpetraExt_MatrixMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "framework/assembly/fe_matrix.hpp"
 #include "framework/assembly/sparse_entries.hpp"
 #include "framework/base/error.hpp"
 #include "framework/mesh/nearest_nodes.hpp"
@@ -79,6 +81,9 @@ std::vector<NodeSetSpring> read_node_set_springs(const Teuchos::ParameterList& s
   return springs;
 }
 
+namespace {
+
+// The ground springs' share on the diagonal, one value per owned DOF.
 std::vector<double> ground_spring_diagonal(const std::vector<NodeSetSpring>& springs,
                                            const DofMap& dofs) {
   const MeshPartition& partition = dofs.partition();
@@ -95,6 +100,7 @@ std::vector<double> ground_spring_diagonal(const std::vector<NodeSetSpring>& spr
   return diagonal;
 }
 
+// The stiffness of the springs between node sets over the owned DOFs, or null without any.
 Teuchos::RCP<TpetraMatrix> paired_spring_stiffness(const std::vector<NodeSetSpring>& springs,
                                                    const DofMap& dofs) {
   const MeshPartition& partition = dofs.partition();
@@ -122,6 +128,20 @@ Teuchos::RCP<TpetraMatrix> paired_spring_stiffness(const std::vector<NodeSetSpri
   if (!any)
     return Teuchos::null;
   return matrix_from_entries(dofs.owned_map(), std::move(entries));
+}
+
+}  // namespace
+
+Teuchos::RCP<TpetraMatrix> stiffness_with_springs(FeMatrix& stiffness,
+                                                  const std::vector<NodeSetSpring>& springs,
+                                                  const DofMap& dofs) {
+  if (springs.empty())
+    return stiffness.matrix();
+  stiffness.add_to_diagonal(ground_spring_diagonal(springs, dofs));
+  Teuchos::RCP<TpetraMatrix> K = stiffness.matrix();
+  if (const auto paired = paired_spring_stiffness(springs, dofs); !paired.is_null())
+    K = Tpetra::MatrixMatrix::add(1.0, false, *K, 1.0, false, *paired);
+  return K;
 }
 
 std::vector<std::array<double, 3>> node_set_spring_forces(const std::vector<NodeSetSpring>& springs,

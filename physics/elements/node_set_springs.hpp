@@ -38,14 +38,14 @@ std::vector<NodeSetSpring> read_node_set_springs(const Teuchos::ParameterList& s
                                                  const MeshPartition& partition,
                                                  const std::string& deck, const std::string& path);
 
-/// The ground springs' share on the diagonal, one value per owned DOF (for
-/// FeMatrix::add_to_diagonal).
-std::vector<double> ground_spring_diagonal(const std::vector<NodeSetSpring>& springs,
-                                           const DofMap& dofs);
+class FeMatrix;
 
-/// The stiffness of the springs between node sets over the owned DOFs, or null without any.
-Teuchos::RCP<TpetraMatrix> paired_spring_stiffness(const std::vector<NodeSetSpring>& springs,
-                                                   const DofMap& dofs);
+/// The assembled \p stiffness with the springs added: the ground springs on its diagonal (in
+/// place), and the springs between node sets, which couple nodes no element joins, as a matrix
+/// added to it (the result; \p stiffness's own matrix where there are none).
+Teuchos::RCP<TpetraMatrix> stiffness_with_springs(FeMatrix& stiffness,
+                                                  const std::vector<NodeSetSpring>& springs,
+                                                  const DofMap& dofs);
 
 /// The force each spring exerts on its node set at displacement \p u (N, summed over ranks): on
 /// the structure for a ground spring, on the first set for a spring between sets (the other

@@ -1,7 +1,6 @@
 #include "physics/modal/modal_step.hpp"
 
 #include <Teuchos_Array.hpp>
-#include <TpetraExt_MatrixMatrix.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
@@ -418,12 +417,7 @@ Teuchos::RCP<TpetraMatrix> ModalStep::with_springs(FeMatrix& stiffness, const Do
     return stiffness.matrix();
   // Read again on the step's own partition (the Blocks'), whose DOFs the pairs index.
   springs_ = read_node_set_springs(*parameters_, dofs.partition(), context.source(), context.path);
-  stiffness.add_to_diagonal(ground_spring_diagonal(springs_, dofs));
-  Teuchos::RCP<TpetraMatrix> K = stiffness.matrix();
-  // Springs between node sets couple nodes no element joins: their matrix is added to K.
-  if (const auto paired = paired_spring_stiffness(springs_, dofs); !paired.is_null())
-    K = Tpetra::MatrixMatrix::add(1.0, false, *K, 1.0, false, *paired);
-  return K;
+  return stiffness_with_springs(stiffness, springs_, dofs);
 }
 
 void ModalStep::run(StepContext& context) {

@@ -1,6 +1,5 @@
 #include "physics/statics/statics_step.hpp"
 
-#include <TpetraExt_MatrixMatrix.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
@@ -151,12 +150,7 @@ void StaticsStep::run(StepContext& context) {
   } else {
     assemble_elastic_stiffness(stiffness, *materials_, &assembly_progress, one_point_kappa_);
   }
-  if (!springs_.empty())
-    stiffness.add_to_diagonal(ground_spring_diagonal(springs_, dofs));
-  // Springs between node sets couple nodes no element joins: their matrix is added to K.
-  Teuchos::RCP<TpetraMatrix> K = stiffness.matrix();
-  if (const auto paired = paired_spring_stiffness(springs_, dofs); !paired.is_null())
-    K = Tpetra::MatrixMatrix::add(1.0, false, *K, 1.0, false, *paired);
+  Teuchos::RCP<TpetraMatrix> K = stiffness_with_springs(stiffness, springs_, dofs);
   assembly_progress.finish();
   const double assembly_seconds = clock.seconds();
 

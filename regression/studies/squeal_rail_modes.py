@@ -155,24 +155,36 @@ def track_deck_text():
     return ET.tostring(root, encoding="unicode")
 
 
+class HeadBins:
+    """The head's top nodes (among `mask`'s) binned every BIN along the rail."""
+
+    def __init__(self, x, y, z, mask=True):
+        self.top = mask & (z > -0.004) & (np.abs(y - RAIL_Y) < 0.006)
+        edges = np.arange(0.0, 2.4 + 1e-9, BIN)
+        self.which = np.digitize(x[self.top], edges) - 1
+        self.centres = 0.5 * (edges[:-1] + edges[1:])
+
+    def mean_abs(self, u):
+        """Mean |u| over the head's top nodes in each bin."""
+        values = np.abs(u[self.top])
+        return np.array([values[self.which == k].mean() for k in range(len(self.centres))])
+
+
+def displacement_fields(variables):
+    """The Exodus variable names of the displacements along x, y and z."""
+    names = exo_names(variables, "name_nod_var")
+    return [f"vals_nod_var{names.index(f'displacement_{c}') + 1}" for c in "xyz"]
+
+
 def head_profiles(exo):
     """Per mode of `exo`: bin centres x (m) and mean |u_z|, |u_y| of the head's top nodes."""
     with netcdf_file(exo, "r", mmap=False) as f:
         v = f.variables
-        x, y, z = (v[k][:].copy() for k in ("coordx", "coordy", "coordz"))
-        names = ["".join(c.decode() for c in row if c) for row in v["name_nod_var"][:]]
-        uy_var = "vals_nod_var%d" % (names.index("displacement_y") + 1)
-        uz_var = "vals_nod_var%d" % (names.index("displacement_z") + 1)
-        top = (z > -0.004) & (np.abs(y - RAIL_Y) < 0.006)
-        edges = np.arange(0.0, 2.4 + 1e-9, BIN)
-        which = np.digitize(x[top], edges) - 1
-        centres = 0.5 * (edges[:-1] + edges[1:])
-        profiles = []
-        for t in range(v["time_whole"].shape[0]):
-            uz, uy = np.abs(v[uz_var][t][top]), np.abs(v[uy_var][t][top])
-            profiles.append((np.array([uz[which == k].mean() for k in range(len(centres))]),
-                             np.array([uy[which == k].mean() for k in range(len(centres))])))
-    return centres, profiles
+        head = HeadBins(*(v[k][:].copy() for k in ("coordx", "coordy", "coordz")))
+        _, uy_var, uz_var = displacement_fields(v)
+        profiles = [(head.mean_abs(v[uz_var][t]), head.mean_abs(v[uy_var][t]))
+                    for t in range(v["time_whole"].shape[0])]
+    return head.centres, profiles
 
 
 def exo_names(variables, key):
@@ -198,18 +210,12 @@ def coupled_rows(exo, step, modes):
         sets = exo_names(v, "ns_names")
         patch = {name: v[f"node_ns{sets.index(name) + 1}"][:] - 1 for name in
                  ("patch wheel", "patch rail") if name in sets}
-        names = exo_names(v, "name_nod_var")
-        fields = [f"vals_nod_var{names.index(f'displacement_{c}') + 1}" for c in "xyz"]
-        top = rail & (z > -0.004) & (np.abs(y - RAIL_Y) < 0.006)
-        edges = np.arange(0.0, 2.4 + 1e-9, BIN)
-        which = np.digitize(x[top], edges) - 1
-        centres = 0.5 * (edges[:-1] + edges[1:])
+        fields = displacement_fields(v)
+        head = HeadBins(x, y, z, rail)
         rows = []
         for t, mode in enumerate(modes):
             u = [v[field][t].copy() for field in fields]
-            uz = np.array([np.abs(u[2][top][which == k]).mean() for k in range(len(centres))])
-            uy = np.array([np.abs(u[1][top][which == k]).mean() for k in range(len(centres))])
-            share, ratio, kind = describe(centres, uz, uy)
+            share, ratio, kind = describe(head.centres, head.mean_abs(u[2]), head.mean_abs(u[1]))
             squared = u[0] ** 2 + u[1] ** 2 + u[2] ** 2
             row = {"supports": TRACK_STEPS[step], "mode": int(mode["mode"]),
                    "frequency_hz": float(mode["frequency_hz"]), "vertical_share": share,
