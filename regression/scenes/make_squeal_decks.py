@@ -756,6 +756,11 @@ def main():
     args = parser.parse_args()
     if args.hold_radius is not None and (args.hold_creepage is None or args.hold_radius <= 0):
         parser.error("--hold-radius needs --hold-creepage and a radius > 0 (m)")
+    variant = sorted(k for k, v in vars(args).items()
+                     if v is not None and k not in ("check", "case", "scale"))
+    if not args.case and variant:  # the shipped decks take none of them
+        parser.error("--" + ", --".join(k.replace("_", "-") for k in variant) +
+                     ": a study variant's options; give --case too")
     if args.case:
         p = dict(FULL if args.scale == "full" else DEMO)
         for key in list(p) + ["sleepers", "modes", "torque", "kinematics", "approach_size",
